@@ -1,0 +1,112 @@
+// Reader for case dictionaries: the OpenFOAM-style syntax subset of
+// design.md 1.2 (FoamFile header, comments, entries, sub-dictionaries, lists,
+// vectors, strings, switches, $macro and $sub/macro, #include,
+// #includeIfPresent, units after numbers and vectors).
+//
+// Every lookup records the keyword as known; after a consumer has read what it
+// needs, checkAllRead() turns any keyword nobody asked for into an InputError
+// with a "did you mean" suggestion. Every default used is recorded once
+// (defaultsUsed()) so the solver can list it in the log.
+// Errors are InputError with "file:line:column: keyword 'k': message".
+#pragma once
+#include "core/Dimension.hpp"
+#include "core/types.hpp"
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace shizuku {
+
+struct SourceLocation {
+  std::string file;
+  int line = 0, column = 0;
+  std::string str() const;  // "file:line:column"
+};
+
+// One parsed value: a token tree.
+struct DictValue {
+  enum class Kind { word, number, string, list, dict };
+  Kind kind = Kind::word;
+  std::string text;                  // word / string text, or the number as written
+  double number = 0;                 // numeric value in SI (unit applied)
+  bool hasUnit = false;
+  Dimension unitDim;                 // dimension of the unit, if hasUnit
+  std::vector<DictValue> items;      // list items (a unit after a list applies to all numbers)
+  std::shared_ptr<class Dictionary> dict;  // kind == dict
+  SourceLocation where;
+};
+
+class Dictionary {
+ public:
+  Dictionary() = default;
+  // Parse a file; `#include` paths are relative to the including file.
+  static Dictionary fromFile(const std::string& path);
+  static Dictionary fromString(const std::string& text, const std::string& name = "<string>");
+  // Read `path` if it exists, else an empty dictionary named after it.
+  static Dictionary fromFileIfPresent(const std::string& path);
+
+  const std::string& name() const { return name_; }  // file path, plus "/sub" scope
+  bool empty() const { return order_.empty(); }
+
+  // --- lookups (each marks `key` as known) ----------------------------------
+  bool found(const std::string& key) const;
+  bool isDict(const std::string& key) const;
+  const Dictionary& subDict(const std::string& key) const;        // error if absent / not a dict
+  const Dictionary* subDictPtr(const std::string& key) const;     // nullptr if absent
+  std::vector<std::string> keys() const;                          // in file order
+  const DictValue& value(const std::string& key) const;           // raw value
+
+  double getScalar(const std::string& key, Dimension d) const;
+  double getScalarOr(const std::string& key, double def, Dimension d) const;
+  int getInt(const std::string& key) const;
+  int getIntOr(const std::string& key, int def) const;
+  template <int D> Vec<D> getVector(const std::string& key, Dimension d) const;
+  template <int D> Vec<D> getVectorOr(const std::string& key, const Vec<D>& def, Dimension d) const;
+  std::string getWord(const std::string& key) const;
+  std::string getWordOr(const std::string& key, const std::string& def) const;
+  // A word that must be one of `options` (error with did-you-mean otherwise).
+  std::string getOption(const std::string& key, const std::vector<std::string>& options) const;
+  std::string getOptionOr(const std::string& key, const std::vector<std::string>& options,
+                          const std::string& def) const;
+  bool getSwitch(const std::string& key) const;
+  bool getSwitchOr(const std::string& key, bool def) const;
+  std::vector<std::string> getWordList(const std::string& key) const;    // (a b c); strings allowed
+  std::vector<double> getScalarList(const std::string& key, Dimension d) const;
+  template <int D> std::vector<Vec<D>> getVectorList(const std::string& key, Dimension d) const;  // ((..) (..))
+  // A D x D matrix written as ((a b) (c d)), row by row.
+  template <int D> Mat<D> getMatrix(const std::string& key, Dimension d) const;
+
+  SourceLocation location(const std::string& key) const;  // of the keyword; the dictionary's own if absent
+  [[noreturn]] void error(const std::string& key, const std::string& message) const;
+
+  // Recursively: every keyword not looked up is an error naming file, line and
+  // the closest known keyword ("did you mean 'maxCo'?").
+  void checkAllRead() const;
+  // Mark a keyword known without reading it (e.g. the FoamFile header).
+  void markRead(const std::string& key) const;
+
+  // "file: key default value" lines, each default once, in the order used.
+  static std::vector<std::string>& defaultsUsed();
+
+ private:
+  friend class DictionaryParser;
+  std::string name_;
+  SourceLocation where_;
+  std::vector<std::string> order_;
+  std::map<std::string, DictValue> entries_;
+  std::map<std::string, SourceLocation> keyLocation_;
+  mutable std::set<std::string> queried_;
+  void recordDefault(const std::string& key, const std::string& value) const;
+};
+
+// Closest candidate by edit distance (case-insensitive), or "" if none is close.
+std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
+
+// Parse a unit such as "cm", "g/cm^3", "cm/s^2", "kPa": SI factor and dimension.
+// Throws InputError (message without location) for an unknown unit.
+struct Unit { double factor = 1; Dimension dim; };
+Unit parseUnit(const std::string& text);
+
+}  // namespace shizuku

@@ -1,0 +1,38 @@
+// Basic types shared by every part of libsph: the spatial dimension D is a
+// compile-time parameter (2 and 3 are instantiated), vectors are Eigen
+// fixed-size types, particle indices are 32-bit.
+#pragma once
+#include <Eigen/Dense>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace shizuku {
+
+template <int D> using Vec = Eigen::Matrix<double, D, 1>;
+template <int D> using Mat = Eigen::Matrix<double, D, D>;
+using Index = std::int32_t;
+
+// What a particle is.
+enum class ParticleType : std::uint8_t { fluid = 0, wall = 1 };
+
+// Free-surface class of a fluid particle (methods.md 5.2). Wall particles are `interior`.
+enum class SurfaceClass : std::uint8_t { interior = 0, vicinity = 1, free = 2, splash = 3 };
+
+inline bool nearSurface(SurfaceClass c) {
+  return c == SurfaceClass::free || c == SurfaceClass::vicinity || c == SurfaceClass::splash;
+}
+
+// Bad input: exit status 1 (design.md 1.1). `what()` is the whole message,
+// already naming file, line and keyword where known.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Numerical failure: exit status 2 after the last good state is written.
+struct NumericalError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace shizuku

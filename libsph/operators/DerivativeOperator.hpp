@@ -1,0 +1,65 @@
+// Derivative operators behind one interface (methods.md section 3), chosen by
+// `derivatives SPH2|corrected|standard` in system/sphSchemes.
+//
+// Every operator is a weighted sum of differences over the neighbour list,
+// with per-pair weights computed once per step by computeWeights():
+//   <grad f>_i = sum_j V (f_j - f_i) gradW_ij
+//   <div u>_i  = sum_j V (u_j - u_i) . gradW_ij
+//   <lap f>_i  = sum_j V (f_j - f_i) lapW_ij
+// SPH2:      full-inverse (FI) 5x5 / 9x9 moment matrix (eq. 3.2), scaled by h,
+//            fallback FI -> first-order corrected -> standard per particle (3.4).
+// corrected: first-order kernel-gradient correction + renormalised Laplacian (3.5).
+// standard:  plain kernel gradient + Morris/Brookshaw Laplacian.
+#pragma once
+#include "core/types.hpp"
+#include "kernels/Kernel.hpp"
+#include "particles/NeighbourList.hpp"
+#include <memory>
+#include <string>
+
+namespace shizuku {
+
+enum class DerivativeScheme { SPH2, corrected, standard };
+DerivativeScheme derivativeSchemeFromName(const std::string& name);  // throws InputError
+std::string toString(DerivativeScheme s);
+
+// Per-pair and per-particle weights shared by every operator in a step.
+template <int D>
+struct PairWeights {
+  std::vector<double> w;           // per pair: W(|r_ij|)
+  std::vector<Vec<D>> gradW;       // per pair: corrected gradient weight (tilde grad W_ij)
+  std::vector<double> lapW;        // per pair: Laplacian weight (tilde lap W_ij)
+  std::vector<std::uint8_t> order; // per particle: 2 = FI, 1 = first order, 0 = standard, 255 = none
+};
+
+template <int D>
+class DerivativeOperator {
+ public:
+  virtual ~DerivativeOperator() = default;
+  virtual DerivativeScheme scheme() const = 0;
+  // Fill `out` for every particle i with computeFor[i] true (other particles get zero
+  // weights and order 255). V = particle volume (uniform). Parallel over particles.
+  virtual void computeWeights(const Kernel<D>& kernel, double V, const NeighbourList<D>& nl,
+                              const std::vector<std::uint8_t>& computeFor, PairWeights<D>& out) const = 0;
+  static std::unique_ptr<DerivativeOperator> create(DerivativeScheme s);
+};
+
+// Operators applied with precomputed weights (rows with order 255 give zero).
+template <int D>
+struct Ops {
+  static void gradient(const NeighbourList<D>& nl, const PairWeights<D>& pw, double V,
+                       const std::vector<double>& f, std::vector<Vec<D>>& out);
+  static void divergence(const NeighbourList<D>& nl, const PairWeights<D>& pw, double V,
+                         const std::vector<Vec<D>>& u, std::vector<double>& out);
+  static void laplacian(const NeighbourList<D>& nl, const PairWeights<D>& pw, double V,
+                        const std::vector<double>& f, std::vector<double>& out);
+  static void laplacian(const NeighbourList<D>& nl, const PairWeights<D>& pw, double V,
+                        const std::vector<Vec<D>>& u, std::vector<Vec<D>>& out);
+  static void velocityGradient(const NeighbourList<D>& nl, const PairWeights<D>& pw, double V,
+                               const std::vector<Vec<D>>& u, std::vector<Mat<D>>& out);  // out(a,b) = d u_a / d x_b
+  // Full Hessian of f at particle i by the FI system (SPH2 only; on demand, not per step).
+  static Mat<D> hessian(const Kernel<D>& kernel, double V, const NeighbourList<D>& nl,
+                        const std::vector<double>& f, std::size_t i);
+};
+
+}  // namespace shizuku

@@ -1,0 +1,63 @@
+// Neighbour lists in compressed-row (CSR) form, built by a cell-linked list
+// in O(N) and reused by every pass of a step (methods.md 13 step 1).
+// Pair data are stored per pair, contiguously: neighbour index j (j != i),
+// r_ij = r_i - r_j (minimum image in periodic directions) and |r_ij|.
+#pragma once
+#include "core/types.hpp"
+#include <array>
+#include <memory>
+
+namespace shizuku {
+
+// Periodicity: per direction, whether it is periodic and the box [lo, hi).
+template <int D>
+struct PeriodicBox {
+  std::array<bool, D> periodic{};
+  Vec<D> lo = Vec<D>::Zero(), hi = Vec<D>::Zero();
+  bool any() const { for (bool p : periodic) if (p) return true; return false; }
+  // Wrap a position into the box in periodic directions.
+  void wrap(Vec<D>& x) const;
+  // Minimum-image difference a - b.
+  Vec<D> difference(const Vec<D>& a, const Vec<D>& b) const;
+};
+
+template <int D>
+struct NeighbourList {
+  std::vector<Index> offset;  // size N+1; pairs of i are [offset[i], offset[i+1])
+  std::vector<Index> j;       // neighbour index
+  std::vector<Vec<D>> rij;    // r_i - r_j
+  std::vector<double> r;      // |r_ij|
+  std::size_t numParticles() const { return offset.empty() ? 0 : offset.size() - 1; }
+  std::size_t numPairs() const { return j.size(); }
+  Index begin(std::size_t i) const { return offset[i]; }
+  Index end(std::size_t i) const { return offset[i + 1]; }
+};
+
+// Cell-linked-list search with cell size = radius. Buffers are kept between
+// calls so that a rebuild inside the time loop does not allocate once the
+// capacity has been reached.
+template <int D>
+class NeighbourSearch {
+ public:
+  explicit NeighbourSearch(double radius, PeriodicBox<D> box = {});
+  double radius() const { return radius_; }
+  const PeriodicBox<D>& box() const { return box_; }
+  // All pairs with 0 < |r_ij| < radius (OpenMP parallel).
+  void build(const std::vector<Vec<D>>& x, NeighbourList<D>& out);
+  // A permutation that sorts particles by cell (for memory locality):
+  // new index k holds old particle perm[k].
+  std::vector<Index> cellOrder(const std::vector<Vec<D>>& x);
+
+ private:
+  double radius_;
+  PeriodicBox<D> box_;
+  struct Impl;
+  std::shared_ptr<Impl> impl_;
+};
+
+// Brute-force O(N^2) reference used by the tests.
+template <int D>
+void bruteForceNeighbours(const std::vector<Vec<D>>& x, double radius, const PeriodicBox<D>& box,
+                          NeighbourList<D>& out);
+
+}  // namespace shizuku

@@ -1,0 +1,63 @@
+// The particle arrays, structure of arrays: one contiguous std::vector per
+// field. Optional fields (shift, normal, ...) stay empty unless an active
+// effect allocates them, so an absent effect costs no memory. Every field is
+// visited by forEachField(), which the writer, the reader and the cell
+// reordering all use, so a new field is added in one place.
+#pragma once
+#include "core/types.hpp"
+#include <cstddef>
+
+namespace shizuku {
+
+template <int D>
+struct ParticleSet {
+  // --- always present -----------------------------------------------------
+  std::vector<Vec<D>> position;     // m
+  std::vector<Vec<D>> velocity;     // m/s (wall particles: wall velocity)
+  std::vector<double> pressure;     // Pa
+  std::vector<double> density;      // summation (number) density <rho>_i, kg/m^D (eq. 18)
+  std::vector<std::uint8_t> type;   // ParticleType
+  std::vector<std::uint8_t> surface;// SurfaceClass
+  std::vector<std::int64_t> id;     // original index, stable under reordering
+  // --- optional (empty when no active effect needs them) -------------------
+  std::vector<Vec<D>> normal;       // outward unit normal near the free surface
+  std::vector<Vec<D>> shift;        // last particle shift delta r (m)
+
+  double mass = 0;        // particle mass (kg, or kg/m in 2D), calibrated on the initial lattice
+  double rho0 = 1000;     // reference density
+  double spacing = 0;     // d0 (m)
+
+  std::size_t size() const { return position.size(); }
+  double volume() const { return mass / rho0; }
+  bool isFluid(std::size_t i) const { return type[i] == std::uint8_t(ParticleType::fluid); }
+  bool isWall(std::size_t i) const { return type[i] == std::uint8_t(ParticleType::wall); }
+  SurfaceClass surfaceClass(std::size_t i) const { return SurfaceClass(surface[i]); }
+
+  // Visit every field as (name, vector&). Names are the ones written to VTK.
+  template <class F> void forEachField(F&& f) {
+    f("U", velocity); f("p", pressure); f("rhoN", density); f("type", type);
+    f("surface", surface); f("id", id); f("normal", normal); f("shift", shift);
+  }
+  template <class F> void forEachField(F&& f) const {
+    const_cast<ParticleSet*>(this)->forEachField(
+        [&](const char* n, auto& v) { f(n, static_cast<const std::decay_t<decltype(v)>&>(v)); });
+  }
+
+  // Resize all present fields (and the mandatory ones) to n.
+  void resize(std::size_t n) {
+    position.resize(n);
+    forEachField([&](const char* name, auto& v) {
+      if (!v.empty() || isMandatory(name)) v.resize(n);
+    });
+  }
+  static bool isMandatory(const std::string& name) {
+    return name == "U" || name == "p" || name == "rhoN" || name == "type" || name == "surface" || name == "id";
+  }
+  std::size_t countFluid() const {
+    std::size_t n = 0;
+    for (auto t : type) n += (t == std::uint8_t(ParticleType::fluid));
+    return n;
+  }
+};
+
+}  // namespace shizuku
