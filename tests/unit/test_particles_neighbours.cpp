@@ -1,0 +1,202 @@
+// Neighbour search tests (NeighbourList.hpp): the cell-linked list equals the
+// O(N^2) brute force on random 2D/3D sets, with and without periodic
+// directions (minimum image across the boundary), no self pairs, rows sorted
+// by j, identical for 1 and 2 threads, cellOrder a permutation sorted by cell,
+// rebuilds reuse the buffers, bad periodic boxes are rejected.
+#define BOOST_TEST_MODULE particles_neighbours
+#include <boost/test/unit_test.hpp>
+
+#include "particles/NeighbourList.hpp"
+#include <algorithm>
+#include <omp.h>
+#include <random>
+
+using namespace shizuku;
+
+namespace {
+
+template <int D>
+std::vector<Vec<D>> randomPoints(std::size_t n, double lo, double hi, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(lo, hi);
+  std::vector<Vec<D>> x(n);
+  for (auto& p : x)
+    for (int a = 0; a < D; ++a) p[a] = u(gen);
+  return x;
+}
+
+// Same pairs (exact j and offsets), rij and r equal to round-off.
+template <int D>
+void checkEqual(const NeighbourList<D>& a, const NeighbourList<D>& b) {
+  BOOST_REQUIRE(a.offset == b.offset);
+  BOOST_REQUIRE(a.j == b.j);
+  double err = 0;
+  for (std::size_t p = 0; p < a.numPairs(); ++p) {
+    err = std::max(err, (a.rij[p] - b.rij[p]).norm());
+    err = std::max(err, std::abs(a.r[p] - b.r[p]));
+  }
+  // positions are O(1): wrapping before differencing changes the last bits only
+  BOOST_TEST(err < 1e-14);
+}
+
+template <int D>
+void checkRows(const NeighbourList<D>& nl, double radius) {
+  for (std::size_t i = 0; i < nl.numParticles(); ++i)
+    for (Index p = nl.begin(i); p < nl.end(i); ++p) {
+      BOOST_TEST_REQUIRE(nl.j[p] != Index(i));
+      BOOST_TEST_REQUIRE(nl.r[p] < radius);
+      BOOST_TEST_REQUIRE(nl.r[p] > 0.0);
+      if (p > nl.begin(i)) BOOST_TEST_REQUIRE(nl.j[p] > nl.j[p - 1]);
+    }
+}
+
+template <int D>
+void compareWithBruteForce(std::size_t n, double radius, const PeriodicBox<D>& box, unsigned seed) {
+  auto x = randomPoints<D>(n, 0.0, 1.0, seed);
+  NeighbourSearch<D> search(radius, box);
+  NeighbourList<D> nl, ref;
+  search.build(x, nl);
+  bruteForceNeighbours(x, radius, box, ref);
+  BOOST_TEST_MESSAGE("D=" << D << " n=" << n << " radius=" << radius << " pairs=" << nl.numPairs());
+  BOOST_TEST(nl.numPairs() > n);  // the test is not vacuous
+  checkEqual(nl, ref);
+  checkRows(nl, radius);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(equals_brute_force_2d_3d) {
+  compareWithBruteForce<2>(3000, 0.04, {}, 1);
+  compareWithBruteForce<2>(500, 0.3, {}, 2);
+  compareWithBruteForce<3>(3000, 0.12, {}, 3);
+  compareWithBruteForce<3>(200, 0.7, {}, 4);  // a single cell in each direction
+}
+
+BOOST_AUTO_TEST_CASE(periodic_equals_brute_force) {
+  PeriodicBox<2> px;
+  px.periodic = {true, false};
+  px.lo = Vec<2>(0, 0);
+  px.hi = Vec<2>(1, 1);
+  compareWithBruteForce<2>(3000, 0.04, px, 5);
+  PeriodicBox<2> pxy = px;
+  pxy.periodic = {true, true};
+  compareWithBruteForce<2>(3000, 0.04, pxy, 6);
+  compareWithBruteForce<2>(800, 0.45, pxy, 7);  // 2 cells per periodic direction
+  compareWithBruteForce<2>(800, 0.34, pxy, 8);  // 2 cells, L < 3 radius
+  PeriodicBox<3> p3;
+  p3.periodic = {true, false, true};
+  p3.lo = Vec<3>::Zero();
+  p3.hi = Vec<3>::Ones();
+  compareWithBruteForce<3>(3000, 0.12, p3, 9);
+  p3.periodic = {true, true, true};
+  compareWithBruteForce<3>(1000, 0.4, p3, 10);
+}
+
+BOOST_AUTO_TEST_CASE(pair_across_periodic_boundary) {
+  PeriodicBox<2> box;
+  box.periodic = {true, false};
+  box.lo = Vec<2>(-1, 0);
+  box.hi = Vec<2>(1, 1);
+  // particle 2 lies outside the box: it is wrapped to x = -0.995
+  std::vector<Vec<2>> x = {Vec<2>(-0.99, 0.5), Vec<2>(0.985, 0.5), Vec<2>(1.005, 0.52)};
+  NeighbourSearch<2> search(0.05, box);
+  NeighbourList<2> nl;
+  search.build(x, nl);
+  BOOST_REQUIRE(nl.numPairs() == 6u);
+  // i = 0: j = 1 with r_01 = -0.99 - (0.985 - 2) = 0.025
+  BOOST_TEST(nl.j[nl.begin(0)] == 1);
+  BOOST_TEST(std::abs(nl.rij[nl.begin(0)][0] - 0.025) < 1e-14);
+  BOOST_TEST(std::abs(nl.rij[nl.begin(0)][1]) < 1e-14);
+  // i = 1: j = 2 at image x = 1.005 - 2 -> r_12 = (0.985 - 1.005, -0.02)
+  BOOST_TEST(nl.j[nl.begin(1) + 1] == 2);
+  BOOST_TEST(std::abs(nl.rij[nl.begin(1) + 1][0] + 0.02) < 1e-14);
+  BOOST_TEST(std::abs(nl.rij[nl.begin(1) + 1][1] + 0.02) < 1e-14);
+  // difference() and wrap()
+  Vec<2> d = box.difference(x[0], x[1]);
+  BOOST_TEST(std::abs(d[0] - 0.025) < 1e-14);
+  Vec<2> w = x[2];
+  box.wrap(w);
+  BOOST_TEST(std::abs(w[0] + 0.995) < 1e-14);
+  BOOST_TEST(w[1] == 0.52);
+}
+
+BOOST_AUTO_TEST_CASE(periodic_length_too_short) {
+  PeriodicBox<2> box;
+  box.periodic = {false, true};
+  box.lo = Vec<2>(0, 0);
+  box.hi = Vec<2>(1, 0.1);
+  BOOST_CHECK_THROW(NeighbourSearch<2>(0.051, box), InputError);
+  BOOST_CHECK_NO_THROW(NeighbourSearch<2>(0.05, box));
+  BOOST_CHECK_THROW(NeighbourSearch<2>(0.0, PeriodicBox<2>{}), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(thread_count_independent_and_no_reallocation) {
+  auto x = randomPoints<3>(20000, 0.0, 1.0, 11);
+  NeighbourSearch<3> search(0.06);
+  NeighbourList<3> a, b;
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(1);
+  search.build(x, a);
+  omp_set_num_threads(2);
+  search.build(x, b);
+  omp_set_num_threads(saved);
+  BOOST_TEST(a.offset == b.offset);
+  BOOST_TEST(a.j == b.j);
+  BOOST_TEST(a.r == b.r);  // bitwise
+  bool same = true;
+  for (std::size_t p = 0; p < a.numPairs(); ++p) same &= (a.rij[p] == b.rij[p]);
+  BOOST_TEST(same);
+  // a rebuild on moved particles of the same count keeps the buffers if they fit
+  const auto* pj = b.j.data();
+  const auto* pr = b.rij.data();
+  for (auto& p : x) p *= 1.0001;  // slightly fewer pairs
+  search.build(x, b);
+  BOOST_TEST(b.numPairs() <= a.numPairs());
+  BOOST_TEST(b.j.data() == pj);
+  BOOST_TEST(b.rij.data() == pr);
+}
+
+BOOST_AUTO_TEST_CASE(non_finite_position) {
+  std::vector<Vec<2>> x = {Vec<2>(0, 0), Vec<2>(std::nan(""), 0)};
+  NeighbourSearch<2> search(0.1);
+  NeighbourList<2> nl;
+  BOOST_CHECK_THROW(search.build(x, nl), NumericalError);
+}
+
+BOOST_AUTO_TEST_CASE(cell_order_is_a_sorting_permutation) {
+  auto x = randomPoints<2>(5000, -2.0, 3.0, 12);
+  NeighbourSearch<2> search(0.1);
+  auto perm = search.cellOrder(x);
+  BOOST_REQUIRE(perm.size() == x.size());
+  std::vector<Index> s = perm;
+  std::sort(s.begin(), s.end());
+  for (std::size_t k = 0; k < s.size(); ++k) BOOST_REQUIRE(s[k] == Index(k));
+  // reordered particles: the search gives the same pairs, relabelled, and
+  // consecutive particles are close (cell order): the mean index distance of
+  // neighbours drops by orders of magnitude.
+  std::vector<Vec<2>> y(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) y[k] = x[perm[k]];
+  NeighbourList<2> nx, ny;
+  search.build(x, nx);
+  search.build(y, ny);
+  BOOST_REQUIRE(nx.numPairs() == ny.numPairs());
+  double spreadX = 0, spreadY = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    for (Index p = nx.begin(i); p < nx.end(i); ++p) spreadX += std::abs(double(nx.j[p]) - double(i));
+    for (Index p = ny.begin(i); p < ny.end(i); ++p) spreadY += std::abs(double(ny.j[p]) - double(i));
+  }
+  BOOST_TEST_MESSAGE("mean |i-j|: input order " << spreadX / nx.numPairs() << ", cell order "
+                                                << spreadY / ny.numPairs());
+  BOOST_TEST(spreadY < 0.1 * spreadX);
+  // relabelled rows hold the same neighbours
+  std::vector<Index> inv(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) inv[perm[k]] = Index(k);
+  for (std::size_t k = 0; k < x.size(); k += 37) {
+    std::vector<Index> a, b;
+    for (Index p = ny.begin(k); p < ny.end(k); ++p) a.push_back(perm[ny.j[p]]);
+    const std::size_t i = perm[k];
+    for (Index p = nx.begin(i); p < nx.end(i); ++p) b.push_back(nx.j[p]);
+    std::sort(a.begin(), a.end());
+    BOOST_TEST_REQUIRE(a == b);
+  }
+}
