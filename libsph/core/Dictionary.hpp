@@ -8,6 +8,19 @@
 // with a "did you mean" suggestion. Every default used is recorded once
 // (defaultsUsed()) so the solver can list it in the log.
 // Errors are InputError with "file:line:column: keyword 'k': message".
+//
+// Rules worth knowing (docs/dictionaries.md has the user's version):
+// - `keyword v1 v2 ...;` is stored as one list value; a value of several
+//   tokens must be written on one line (a list in parentheses may span lines),
+//   so that a forgotten ';' is reported at the end of the line it belongs to.
+// - A repeated keyword replaces the earlier value (its place in keys() stays);
+//   two sub-dictionaries of the same name merge, recursively.
+// - `$name` copies an entry defined earlier in this or an enclosing
+//   dictionary, `$sub/name` walks into sub-dictionaries, and `$name;` standing
+//   alone merges a dictionary into the current one. The entries a macro
+//   refers to count as read.
+// - A unit written after a list applies to every number in it; numbers are
+//   SI after parsing; getters check the unit's dimension (no unit = SI).
 #pragma once
 #include "core/Dimension.hpp"
 #include "core/types.hpp"
@@ -33,6 +46,7 @@ struct DictValue {
   double number = 0;                 // numeric value in SI (unit applied)
   bool hasUnit = false;
   Dimension unitDim;                 // dimension of the unit, if hasUnit
+  std::string unitText;              // the unit as written, without brackets ("cm/s^2")
   std::vector<DictValue> items;      // list items (a unit after a list applies to all numbers)
   std::shared_ptr<class Dictionary> dict;  // kind == dict
   SourceLocation where;
@@ -99,6 +113,10 @@ class Dictionary {
   std::map<std::string, SourceLocation> keyLocation_;
   mutable std::set<std::string> queried_;
   void recordDefault(const std::string& key, const std::string& value) const;
+  const DictValue* find(const std::string& key) const;  // marks key; nullptr if absent
+  const DictValue& require(const std::string& key, const std::string& expected) const;
+  double numberOf(const std::string& key, const DictValue& v, Dimension d) const;
+  template <int D> Vec<D> vectorOf(const std::string& key, const DictValue& v, Dimension d) const;
 };
 
 // Closest candidate by edit distance (case-insensitive), or "" if none is close.

@@ -9,7 +9,11 @@ struct Dimension {
   int M = 0, L = 0, T = 0;
   bool operator==(const Dimension& o) const { return M == o.M && L == o.L && T == o.T; }
   bool operator!=(const Dimension& o) const { return !(*this == o); }
-  std::string str() const;  // e.g. "[m/s^2]", "[-]"
+  std::string str() const;       // e.g. "[m/s^2]", "[-]", "[Pa]"
+  std::string describe() const;  // e.g. "a length [m]", "a dimensionless number [-]"
+  Dimension operator*(const Dimension& o) const { return {M + o.M, L + o.L, T + o.T}; }
+  Dimension operator/(const Dimension& o) const { return {M - o.M, L - o.L, T - o.T}; }
+  Dimension pow(int n) const { return {M * n, L * n, T * n}; }
 };
 
 namespace dim {
