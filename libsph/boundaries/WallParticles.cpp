@@ -1,0 +1,44 @@
+// Dummy wall particles: Shepard velocity and the Adami pressure row (methods.md 4.2, 11).
+#include "boundaries/WallParticles.hpp"
+
+namespace shizuku {
+
+template <int D>
+void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u) {
+  const auto& nl = s.neighbours;
+  const long n = long(s.size());
+#pragma omp parallel for schedule(static)
+  for (long w = 0; w < n; ++w) {
+    if (s.isFluid(w)) continue;
+    Vec<D> sum = Vec<D>::Zero();
+    double ws = 0;
+    for (Index k = nl.begin(w); k < nl.end(w); ++k) {
+      const Index f = nl.j[k];
+      if (!s.isFluid(f)) continue;
+      sum += s.weights.w[k] * u[f];
+      ws += s.weights.w[k];
+    }
+    u[w] = ws > 0 ? Vec<D>(sum / ws) : s.particles.velocity[w];
+  }
+}
+
+template <int D>
+AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, std::size_t w) {
+  const auto& nl = s.neighbours;
+  AdamiRow row;
+  Vec<D> rw = Vec<D>::Zero();
+  for (Index k = nl.begin(w); k < nl.end(w); ++k) {
+    if (!s.isFluid(nl.j[k])) continue;
+    row.weightSum += s.weights.w[k];
+    rw += s.weights.w[k] * nl.rij[k];
+  }
+  if (row.weightSum > 0) row.rhs = s.rho0 * s.g.dot(rw) / row.weightSum;
+  return row;
+}
+
+template void shepardFluidVelocity<2>(const FlowState<2>&, std::vector<Vec<2>>&);
+template void shepardFluidVelocity<3>(const FlowState<3>&, std::vector<Vec<3>>&);
+template struct AdamiRow<2>;
+template struct AdamiRow<3>;
+
+}  // namespace shizuku

@@ -1,0 +1,62 @@
+// The effect registry: named creators for every optional effect.
+#include "effects/Effect.hpp"
+#include "effects/BodyForces.hpp"
+#include "effects/PressureStabilization.hpp"
+#include "effects/registerShiftingEffects.hpp"
+
+namespace shizuku {
+
+const char* toString(EffectStage s) {
+  switch (s) {
+    case EffectStage::force: return "force";
+    case EffectStage::pressureSource: return "pressureSource";
+    case EffectStage::advection: return "advection";
+    case EffectStage::postAdvection: return "postAdvection";
+    case EffectStage::shift: return "shift";
+  }
+  return "?";
+}
+
+template <int D>
+EffectRegistry<D>& EffectRegistry<D>::instance() {
+  static EffectRegistry r;
+  return r;
+}
+
+template <int D>
+std::unique_ptr<Effect<D>> EffectRegistry<D>::create(const std::string& name, const Dictionary& dict,
+                                                     const FlowState<D>& s) const {
+  auto it = table_.find(name);
+  if (it == table_.end()) {
+    std::vector<std::string> known = names();
+    std::string hint = closestMatch(name, known);
+    throw InputError(cat(dict.name(), ": unknown effect '", name, "'",
+                         hint.empty() ? "" : cat("; did you mean '", hint, "'?")));
+  }
+  return it->second(dict, s);
+}
+
+template <int D>
+std::vector<std::string> EffectRegistry<D>::names() const {
+  std::vector<std::string> v;
+  for (auto& kv : table_) v.push_back(kv.first);
+  return v;
+}
+
+template <int D>
+void registerBuiltinEffects() {
+  auto& r = EffectRegistry<D>::instance();
+  if (r.has("gravity")) return;
+  r.add("gravity", [](const Dictionary& d, const FlowState<D>& s) { return makeGravity<D>(d, s); });
+  r.add("viscosity", [](const Dictionary& d, const FlowState<D>& s) { return makeViscosity<D>(d, s); });
+  r.add("pressureStabilization",
+        [](const Dictionary& d, const FlowState<D>& s) { return makePressureStabilization<D>(d, s); });
+  registerShiftingEffects<D>(r);
+}
+
+template class EffectRegistry<2>;
+template class EffectRegistry<3>;
+template void registerBuiltinEffects<2>();
+template void registerBuiltinEffects<3>();
+
+}  // namespace shizuku

@@ -1,0 +1,40 @@
+// Stabilized ISPH source term, eq. (9).
+#include "effects/PressureStabilization.hpp"
+
+namespace shizuku {
+namespace {
+
+template <int D>
+class DensityInvariantSource final : public Effect<D> {
+ public:
+  explicit DensityInvariantSource(double alpha) : alpha_(alpha) {}
+  std::string name() const override { return "pressureStabilization"; }
+  EffectStage stage() const override { return EffectStage::pressureSource; }
+  std::string describe() const override { return cat("type densityInvariant, alpha = ", alpha_); }
+  void addPressureSource(const FlowState<D>& s, std::vector<double>& rhs) override {
+    const auto& rho = s.particles.density;
+    const double c = alpha_ / (s.dt * s.dt);
+    const long n = long(s.size());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i)
+      if (s.isFluid(i)) rhs[i] += c * (s.rho0 - rho[i]);
+  }
+
+ private:
+  double alpha_;
+};
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<Effect<D>> makePressureStabilization(const Dictionary& dict, const FlowState<D>&) {
+  dict.getOption("type", {"densityInvariant"});
+  const double alpha = dict.getScalar("alpha", dim::none);
+  if (alpha < 0) dict.error("alpha", "must be >= 0");
+  return std::make_unique<DensityInvariantSource<D>>(alpha);
+}
+
+template std::unique_ptr<Effect<2>> makePressureStabilization<2>(const Dictionary&, const FlowState<2>&);
+template std::unique_ptr<Effect<3>> makePressureStabilization<3>(const Dictionary&, const FlowState<3>&);
+
+}  // namespace shizuku

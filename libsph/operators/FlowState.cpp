@@ -1,0 +1,39 @@
+// FlowState helpers: pair-geometry refresh and the summation density (eq. 18).
+#include "operators/FlowState.hpp"
+
+namespace shizuku {
+
+template <int D>
+void FlowState<D>::refreshPairGeometry() {
+  auto& nl = neighbours;
+  const auto& x = particles.position;
+  const long n = long(nl.numParticles());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+      const Vec<D> d = periodic.any() ? periodic.difference(x[i], x[nl.j[k]]) : Vec<D>(x[i] - x[nl.j[k]]);
+      nl.rij[k] = d;
+      nl.r[k] = d.norm();
+      weights.w[k] = kernel.w(nl.r[k]);
+    }
+}
+
+template <int D>
+void FlowState<D>::computeDensity() {
+  auto& rho = particles.density;
+  const auto& nl = neighbours;
+  const double m = particles.mass, w0 = kernel.w(0.0);
+  const long n = long(size());
+  rho.resize(size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    double s = w0;
+    for (Index k = nl.begin(i); k < nl.end(i); ++k) s += weights.w[k];
+    rho[i] = m * s;
+  }
+}
+
+template struct FlowState<2>;
+template struct FlowState<3>;
+
+}  // namespace shizuku

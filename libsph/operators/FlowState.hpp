@@ -1,0 +1,54 @@
+// Everything a stage of the ISPH step reads or writes (methods.md 13): the
+// particles, the neighbour list and per-pair weights of this step, the
+// physical constants and the per-step derived fields. Effects receive it;
+// arrays that only an effect needs belong to that effect, not here.
+#pragma once
+#include "core/types.hpp"
+#include "kernels/Kernel.hpp"
+#include "operators/DerivativeOperator.hpp"
+#include "particles/NeighbourList.hpp"
+#include "particles/ParticleSet.hpp"
+
+namespace shizuku {
+
+template <int D>
+struct FlowState {
+  ParticleSet<D> particles;
+  Kernel<D> kernel;
+  PeriodicBox<D> periodic;
+  NeighbourList<D> neighbours;           // CSR, built once per step at r^n
+  PairWeights<D> weights;                // W, corrected gradient, Laplacian weights
+  std::vector<std::uint8_t> isFluidMask; // 1 for fluid particles (weights are computed for them)
+
+  // constants
+  double d0 = 0, h = 0, rho0 = 1000, nu = 0;
+  Vec<D> g = Vec<D>::Zero();
+  bool gravity = false;
+
+  // time
+  double time = 0, dt = 0;
+  long step = 0;
+
+  // per-step derived fields (sized once, reused every step)
+  std::vector<double> divR;              // -sum V r_ij . gradW_ij (free-surface indicator, methods 5.1)
+  std::vector<Vec<D>> gradC;             // kernel-sum gradient, inward (normals, methods 5.3)
+  std::vector<Vec<D>> uStar;             // predicted velocity u* (fluid), Shepard-interpolated (walls)
+  std::vector<Vec<D>> acceleration;      // body and viscous forces per unit mass of the predictor
+
+  // surface fit (methods.md 8.2), allocated only when an effect needs it:
+  // particles.normal is then the fitted outward normal where the fit succeeded.
+  std::vector<double> fitDistance;       // signed distance s_i / d0 (positive outside), NaN where not fitted
+  std::vector<double> curvature;         // kappa_i * d0 (eq. 20), NaN where not computed
+
+  double V() const { return particles.volume(); }
+  std::size_t size() const { return particles.size(); }
+  bool isFluid(std::size_t i) const { return isFluidMask[i] != 0; }
+  SurfaceClass surfaceClass(std::size_t i) const { return particles.surfaceClass(i); }
+
+  // Recompute r_ij, |r_ij| and W_ij on the current pair list after positions moved.
+  void refreshPairGeometry();
+  // Summation density <rho>_i = m sum_j W_ij incl. self and walls (eq. 18), for all particles.
+  void computeDensity();
+};
+
+}  // namespace shizuku

@@ -1,0 +1,37 @@
+// Free-surface detection, particle classes and outward normals (methods.md 5).
+//   divR_i  = -sum_j V r_ij . gradW_ij           (uncorrected kernel gradient, fluid + walls)
+//   gradC_i = sum_j V gradW_ij                   (non-difference form; points into the fluid)
+//   n_i     = -gradC_i / |gradC_i|               (outward normal)
+// Stage 1: divR < splashThreshold -> splash; divR < candidateThreshold -> candidate; else interior.
+// Stage 2 (Marrone scan region): a candidate is NOT free surface if a neighbour j lies in the
+// cone |r_ji| < sqrt(2) h, angle(n_i, r_ji) < pi/4, or, farther away, within h of r_i + h n_i.
+// Vicinity: a non-free fluid particle with a free-surface particle within vicinityRadius (2h).
+// Reads (system/sphSchemes): freeSurface { candidateThreshold 1.75; splashThreshold 0.4;
+//                                          vicinityRadius 2; (times h) }
+#pragma once
+#include "core/Dictionary.hpp"
+#include "operators/FlowState.hpp"
+
+namespace shizuku {
+
+struct FreeSurfaceParameters {
+  double candidateThreshold = 1.75;  // on divR (D = 2; scaled by D/2 in 3D)
+  double splashThreshold = 0.4;
+  double vicinityRadius = 2.0;       // times h
+  bool enabled = true;               // false for a closed domain without free surface
+  static FreeSurfaceParameters read(const Dictionary* dict, int dimension);
+};
+
+template <int D>
+class FreeSurfaceDetector {
+ public:
+  explicit FreeSurfaceDetector(const FreeSurfaceParameters& p) : par_(p) {}
+  const FreeSurfaceParameters& parameters() const { return par_; }
+  // Fills s.divR, s.gradC, particles.surface and particles.normal (free, splash and vicinity).
+  void detect(FlowState<D>& s) const;
+
+ private:
+  FreeSurfaceParameters par_;
+};
+
+}  // namespace shizuku
