@@ -1,0 +1,106 @@
+// Atomic time-directory write, exact read, listing: see TimeDirectory.hpp
+// (design.md 1.3).
+#include "io/TimeDirectory.hpp"
+#include "io/AsciiFields.hpp"
+#include "io/FileOps.hpp"
+#include "io/TimeFile.hpp"
+#include "io/TimeName.hpp"
+#include "io/VtpFile.hpp"
+#include <algorithm>
+#include <cstdio>
+#include <dirent.h>
+#include <unistd.h>
+
+namespace shizuku {
+
+namespace detail {
+void setWriteFailureHook(std::function<int(const std::string&)> hook) { fileops::setFailureHook(std::move(hook)); }
+}  // namespace detail
+
+namespace {
+
+// Put the finished folder `tmp` at `target`, replacing whatever is there.
+void moveIntoPlace(const std::string& tmp, const std::string& target) {
+  if (!fileops::isDirectory(target) && !fileops::isRegularFile(target)) {
+    fileops::renamePath(tmp, target);
+    return;
+  }
+  if (fileops::exchangePaths(tmp, target)) {  // atomic: tmp now holds the old one
+    fileops::removeTree(tmp);
+    return;
+  }
+  // No atomic exchange on this file system: move the old one aside first.
+  const std::string old = target + ".old-" + std::to_string(::getpid());
+  fileops::removeTree(old);
+  fileops::renamePath(target, old);
+  try {
+    fileops::renamePath(tmp, target);
+  } catch (...) {
+    std::rename(old.c_str(), target.c_str());  // put the old one back
+    throw;
+  }
+  fileops::removeTree(old);
+}
+
+}  // namespace
+
+template <int D>
+void writeTimeDirectory(const std::string& caseDir, const std::string& timeName, const ParticleSet<D>& p,
+                        const TimeState& s, bool ascii) {
+  if (!parseTimeName(timeName))
+    throw std::runtime_error("cannot write time directory '" + caseDir + "/" + timeName +
+                             "': '" + timeName + "' is not a time name");
+  const std::string target = caseDir + "/" + timeName;
+  const std::string tmp = target + ".tmp-" + std::to_string(::getpid());
+  fileops::removeTree(tmp);  // a leftover of this same process id
+  fileops::makeDirectory(tmp);
+  try {
+    fileops::makeDirectory(tmp + "/uniform");
+    writeVtp<D>(tmp + "/particles.vtp", p, s);
+    fileops::syncPath(tmp + "/particles.vtp");
+    fileops::writeFileSynced(tmp + "/uniform/time", formatTimeFile(s, timeName));
+    if (ascii) writeAsciiFields<D>(tmp, p, s.time);
+    fileops::syncPath(tmp + "/uniform");
+    fileops::syncPath(tmp);
+    moveIntoPlace(tmp, target);
+  } catch (...) {
+    fileops::removeTree(tmp);
+    throw;
+  }
+  fileops::syncPath(caseDir);
+  writePvd(caseDir);
+}
+
+template <int D>
+ParticleSet<D> readTimeDirectory(const std::string& caseDir, const std::string& timeName, TimeState& s) {
+  const std::string dir = caseDir + "/" + timeName;
+  if (!fileops::isDirectory(dir)) throw InputError("time directory '" + dir + "' does not exist");
+  ParticleSet<D> p = readVtp<D>(dir + "/particles.vtp", nullptr);
+  s = readTimeFile(dir + "/uniform/time");
+  return p;
+}
+
+std::vector<std::pair<double, std::string>> listTimeDirectories(const std::string& caseDir) {
+  std::vector<std::pair<double, std::string>> out;
+  DIR* d = ::opendir(caseDir.c_str());
+  if (!d) return out;
+  while (dirent* e = ::readdir(d)) {
+    std::string name = e->d_name;
+    auto t = parseTimeName(name);  // rejects "x.tmp-123", "system", ...
+    if (!t) continue;
+    const std::string dir = caseDir + "/" + name;
+    if (fileops::isDirectory(dir) && fileops::isRegularFile(dir + "/particles.vtp") &&
+        fileops::isRegularFile(dir + "/uniform/time"))
+      out.emplace_back(*t, name);
+  }
+  ::closedir(d);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+template void writeTimeDirectory<2>(const std::string&, const std::string&, const ParticleSet<2>&, const TimeState&, bool);
+template void writeTimeDirectory<3>(const std::string&, const std::string&, const ParticleSet<3>&, const TimeState&, bool);
+template ParticleSet<2> readTimeDirectory<2>(const std::string&, const std::string&, TimeState&);
+template ParticleSet<3> readTimeDirectory<3>(const std::string&, const std::string&, TimeState&);
+
+}  // namespace shizuku

@@ -1,0 +1,58 @@
+// Time directories: what a run writes and a restart reads (design.md 1.2, 1.3).
+//
+//   <case>/<time>/particles.vtp   every particle field (VtpFile.hpp)
+//   <case>/<time>/uniform/time    time, step index, dt state (TimeFile.hpp)
+//   <case>/<time>/<field>         with ascii: one text file per field (AsciiFields.hpp)
+//   <case>/particles.pvd          the series, for ParaView (Pvd.cpp)
+//
+// Writes are atomic: everything goes to <case>/<time>.tmp-<pid>/, is fsynced,
+// then swapped into place (rename, or an atomic exchange when <time> exists),
+// so a crash leaves either the old or the new directory, never half of one.
+// The pvd is rewritten through a temporary file and a rename as well.
+// Dictionary keys read: none (the solver passes writeFormat as `ascii`).
+#pragma once
+#include "particles/ParticleSet.hpp"
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace shizuku {
+
+struct TimeState {
+  double time = 0;     // s
+  long step = 0;       // time-step index
+  double deltaT = 0;   // s, the next step's dt
+  double deltaT0 = 0;  // s, the previous step's dt
+  std::string note;    // free text (e.g. "written after a NumericalError")
+};
+
+// Throws std::runtime_error naming the path and strerror on any failure; an
+// existing time directory of the same or any other name is then untouched.
+template <int D>
+void writeTimeDirectory(const std::string& caseDir, const std::string& timeName,
+                        const ParticleSet<D>& p, const TimeState& s, bool ascii);
+
+// Reads <case>/<timeName> back exactly. Throws InputError naming the file on
+// a missing or corrupt file, or one written by a run of another dimension.
+template <int D>
+ParticleSet<D> readTimeDirectory(const std::string& caseDir, const std::string& timeName, TimeState& s);
+
+// Complete time directories (name parses as a number, holds particles.vtp and
+// uniform/time), sorted by time; *.tmp-* folders are ignored. A missing case
+// folder has none.
+std::vector<std::pair<double, std::string>> listTimeDirectories(const std::string& caseDir);
+
+// Rebuild <case>/particles.pvd from listTimeDirectories (atomic replace).
+void writePvd(const std::string& caseDir);
+
+namespace detail {
+// Tests only: called at each file-system stage of a write ("create folder",
+// "create file", "write", "sync", "rename", "write vtp"); a non-zero return is
+// an errno value to fail with there. A non-zero return for "exchange" makes
+// the atomic exchange look unsupported (the two-rename fallback runs).
+// nullptr clears it.
+void setWriteFailureHook(std::function<int(const std::string& stage)> hook);
+}  // namespace detail
+
+}  // namespace shizuku

@@ -1,0 +1,139 @@
+// uniform/time writer and reader: see TimeFile.hpp (design.md 1.3).
+#include "io/TimeFile.hpp"
+#include "io/TimeName.hpp"
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace shizuku {
+
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string q = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') q += '\\';
+    q += (c == '\n' ? ' ' : c);
+  }
+  return q + "\"";
+}
+
+struct Entry {
+  std::string text;
+  int line = 0;
+};
+
+[[noreturn]] void bad(const std::string& path, int line, const std::string& why) {
+  throw InputError(path + ":" + std::to_string(line) + ": " + why);
+}
+
+// keyword -> value text (strings unquoted), for the flat `keyword value;` form.
+std::map<std::string, Entry> parse(const std::string& path, const std::string& text) {
+  std::map<std::string, Entry> out;
+  std::size_t i = 0;
+  int line = 1;
+  auto skipSpace = [&] {
+    while (i < text.size()) {
+      char c = text[i];
+      if (c == '\n') { ++line; ++i; }
+      else if (c == ' ' || c == '\t' || c == '\r') ++i;
+      else if (text.compare(i, 2, "//") == 0) { while (i < text.size() && text[i] != '\n') ++i; }
+      else if (text.compare(i, 2, "/*") == 0) {
+        std::size_t end = text.find("*/", i + 2);
+        if (end == std::string::npos) bad(path, line, "unterminated /* comment");
+        for (std::size_t k = i; k < end; ++k) line += text[k] == '\n';
+        i = end + 2;
+      } else break;
+    }
+  };
+  auto token = [&](std::string& t, bool& wasString) {
+    skipSpace();
+    t.clear();
+    wasString = false;
+    if (i >= text.size()) return false;
+    if (text[i] == '"') {
+      wasString = true;
+      ++i;
+      while (i < text.size() && text[i] != '"') {
+        if (text[i] == '\\' && i + 1 < text.size()) ++i;
+        if (text[i] == '\n') ++line;
+        t += text[i++];
+      }
+      if (i >= text.size()) bad(path, line, "unterminated string");
+      ++i;
+      return true;
+    }
+    if (text[i] == ';' || text[i] == '{' || text[i] == '}') { t = text[i++]; return true; }
+    while (i < text.size() && !std::isspace((unsigned char)text[i]) && text[i] != ';' && text[i] != '"' &&
+           text[i] != '{' && text[i] != '}')
+      t += text[i++];
+    return true;
+  };
+  std::string key, value, semi;
+  bool s1, s2, s3;
+  while (token(key, s1)) {
+    int at = line;
+    if (key == "{" || key == ";" || key == "}") bad(path, at, "unexpected '" + key + "'");
+    if (!token(value, s2)) bad(path, at, "keyword '" + key + "' has no value");
+    if (value == "{") {  // a header block such as FoamFile { ... }: skipped
+      int depth = 1;
+      while (depth > 0 && token(value, s2)) depth += (value == "{") - (value == "}");
+      if (depth > 0) bad(path, at, "unterminated block '" + key + "'");
+      continue;
+    }
+    if (!token(semi, s3) || semi != ";") bad(path, at, "keyword '" + key + "': expected ';' after the value");
+    out[key] = Entry{value, at};
+  }
+  return out;
+}
+
+double number(const std::string& path, const std::map<std::string, Entry>& e, const std::string& key) {
+  auto it = e.find(key);
+  if (it == e.end()) throw InputError(path + ": keyword '" + key + "' is missing");
+  auto v = parseNumber(it->second.text);
+  if (!v) bad(path, it->second.line, "keyword '" + key + "': '" + it->second.text + "' is not a number");
+  return *v;
+}
+
+}  // namespace
+
+std::string formatTimeFile(const TimeState& s, const std::string& timeName) {
+  std::ostringstream o;
+  o << "/*--------------------------------------------------------------------------*\\\n"
+       "  shizuku: time state of time directory " << timeName << "\n"
+       "  Read back on restart (startFrom latestTime); numbers are exact.\n"
+       "\\*--------------------------------------------------------------------------*/\n\n";
+  o << "value    " << exactNumber(s.time) << ";   // s\n";
+  o << "name     " << quoted(timeName) << ";\n";
+  o << "index    " << s.step << ";\n";
+  o << "deltaT   " << exactNumber(s.deltaT) << ";   // s, next step\n";
+  o << "deltaT0  " << exactNumber(s.deltaT0) << ";   // s, previous step\n";
+  if (!s.note.empty()) o << "note     " << quoted(s.note) << ";\n";
+  return o.str();
+}
+
+TimeState readTimeFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read time file '" + path + "': " + std::strerror(errno));
+  std::stringstream buf;
+  buf << in.rdbuf();
+  auto e = parse(path, buf.str());
+  TimeState s;
+  s.time = number(path, e, "value");
+  auto it = e.find("index");
+  if (it == e.end()) throw InputError(path + ": keyword 'index' is missing");
+  const std::string& t = it->second.text;
+  auto r = std::from_chars(t.data(), t.data() + t.size(), s.step);
+  if (r.ec != std::errc() || r.ptr != t.data() + t.size())
+    bad(path, it->second.line, "keyword 'index': '" + t + "' is not an integer");
+  s.deltaT = number(path, e, "deltaT");
+  s.deltaT0 = e.count("deltaT0") ? number(path, e, "deltaT0") : s.deltaT;
+  if (e.count("note")) s.note = e.at("note").text;
+  return s;
+}
+
+}  // namespace shizuku

@@ -1,0 +1,24 @@
+// <time>/uniform/time: the time state of a time directory (design.md 1.3),
+// in the case-dictionary syntax (design.md 1.2), e.g.
+//   value    0.1;       // s, exact (shortest text that reads back bit for bit)
+//   name     "0.1";     // the directory name
+//   index    1000;      // time-step index
+//   deltaT   0.0001;    // s, dt of the next step
+//   deltaT0  0.0001;    // s, dt of the previous step
+//   note     "...";     // optional free text
+// A restart (startFrom latestTime) reads it back and continues exactly.
+// This small reader understands only this flat form (keyword value;) plus
+// comments; unknown keywords are ignored so later versions can add some.
+// Dictionary keys read: value, name, index, deltaT, deltaT0, note.
+#pragma once
+#include "io/TimeDirectory.hpp"
+#include <string>
+
+namespace shizuku {
+
+std::string formatTimeFile(const TimeState& s, const std::string& timeName);
+// Throws InputError naming the file if it is missing or a required entry
+// (value, index, deltaT) is absent or not a number. deltaT0 defaults to deltaT.
+TimeState readTimeFile(const std::string& path);
+
+}  // namespace shizuku

@@ -1,0 +1,301 @@
+// particles.vtp writer and exact reader: see VtpFile.hpp (design.md 1.3).
+#include "io/VtpFile.hpp"
+#include "io/FileOps.hpp"
+#include <cerrno>
+#include <cstring>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkDoubleArray.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkTypeInt64Array.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+
+namespace shizuku {
+
+namespace {
+
+// Collects VTK error and warning messages of one reader or writer, so they end
+// up in our exception instead of on stderr.
+class MessageCapture : public vtkCommand {
+ public:
+  static MessageCapture* New() { return new MessageCapture; }
+  void Execute(vtkObject*, unsigned long, void* data) override {
+    if (!data) return;
+    std::string m = static_cast<const char*>(data);
+    while (!m.empty() && (m.back() == '\n' || m.back() == ' ')) m.pop_back();
+    auto cut = m.rfind("): ");  // drop "ERROR: In file, line N\nvtkClass (0x..): "
+    if (cut != std::string::npos) m = m.substr(cut + 3);
+    if (!text.empty()) text += "; ";
+    text += m;
+  }
+  std::string text;
+};
+
+vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<double>& v) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(1);
+  a->SetNumberOfTuples(vtkIdType(v.size()));
+  if (!v.empty()) std::memcpy(a->GetPointer(0), v.data(), v.size() * sizeof(double));
+  return a;
+}
+
+vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<std::uint8_t>& v) {
+  auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(1);
+  a->SetNumberOfTuples(vtkIdType(v.size()));
+  if (!v.empty()) std::memcpy(a->GetPointer(0), v.data(), v.size());
+  return a;
+}
+
+vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<std::int64_t>& v) {
+  auto a = vtkSmartPointer<vtkTypeInt64Array>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(1);
+  a->SetNumberOfTuples(vtkIdType(v.size()));
+  if (!v.empty()) std::memcpy(a->GetPointer(0), v.data(), v.size() * sizeof(std::int64_t));
+  return a;
+}
+
+template <int D>
+vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<Vec<D>>& v) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(vtkIdType(v.size()));
+  double* x = a->GetPointer(0);
+  const long n = long(v.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) x[3 * i + k] = k < D ? v[i][k] : 0.0;
+  return a;
+}
+
+void addFieldValue(vtkFieldData* fd, const char* name, double value) {
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->SetNumberOfTuples(1);
+  a->SetValue(0, value);
+  fd->AddArray(a);
+}
+
+void addFieldValue(vtkFieldData* fd, const char* name, std::int64_t value) {
+  vtkNew<vtkTypeInt64Array> a;
+  a->SetName(name);
+  a->SetNumberOfTuples(1);
+  a->SetValue(0, value);
+  fd->AddArray(a);
+}
+
+// --- reading -----------------------------------------------------------------
+
+[[noreturn]] void corrupt(const std::string& path, const std::string& why) {
+  throw InputError("corrupt particle file '" + path + "': " + why);
+}
+
+bool isInt64(const vtkAbstractArray* a) {
+  int t = const_cast<vtkAbstractArray*>(a)->GetDataType();
+  return (t == VTK_LONG || t == VTK_LONG_LONG || t == VTK_ID_TYPE || t == VTK_TYPE_INT64) &&
+         const_cast<vtkAbstractArray*>(a)->GetDataTypeSize() == 8;
+}
+
+void checkShape(const std::string& path, const char* name, vtkDataArray* a, bool typeOk,
+                const char* typeName, int components, vtkIdType n) {
+  if (!typeOk) corrupt(path, std::string("array '") + name + "' is " + a->GetDataTypeAsString() +
+                                 ", expected " + typeName);
+  if (a->GetNumberOfComponents() != components)
+    corrupt(path, std::string("array '") + name + "' has " + std::to_string(a->GetNumberOfComponents()) +
+                      " components, expected " + std::to_string(components));
+  if (a->GetNumberOfTuples() != n)
+    corrupt(path, std::string("array '") + name + "' has " + std::to_string(a->GetNumberOfTuples()) +
+                      " values for " + std::to_string(n) + " particles");
+}
+
+void readArray(const std::string& path, const char* name, vtkDataArray* a, vtkIdType n, std::vector<double>& v) {
+  checkShape(path, name, a, a->GetDataType() == VTK_DOUBLE, "Float64", 1, n);
+  v.resize(std::size_t(n));
+  if (n) std::memcpy(v.data(), a->GetVoidPointer(0), std::size_t(n) * sizeof(double));
+}
+
+void readArray(const std::string& path, const char* name, vtkDataArray* a, vtkIdType n, std::vector<std::uint8_t>& v) {
+  checkShape(path, name, a, a->GetDataType() == VTK_UNSIGNED_CHAR, "UInt8", 1, n);
+  v.resize(std::size_t(n));
+  if (n) std::memcpy(v.data(), a->GetVoidPointer(0), std::size_t(n));
+}
+
+void readArray(const std::string& path, const char* name, vtkDataArray* a, vtkIdType n, std::vector<std::int64_t>& v) {
+  checkShape(path, name, a, isInt64(a), "Int64", 1, n);
+  v.resize(std::size_t(n));
+  if (n) std::memcpy(v.data(), a->GetVoidPointer(0), std::size_t(n) * sizeof(std::int64_t));
+}
+
+template <int D>
+void readArray(const std::string& path, const char* name, vtkDataArray* a, vtkIdType n, std::vector<Vec<D>>& v) {
+  checkShape(path, name, a, a->GetDataType() == VTK_DOUBLE, "Float64", 3, n);
+  v.resize(std::size_t(n));
+  const double* x = n ? static_cast<const double*>(a->GetVoidPointer(0)) : nullptr;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < long(n); ++i)
+    for (int k = 0; k < D; ++k) v[i][k] = x[3 * i + k];
+}
+
+vtkDataArray* fieldArray(const std::string& path, vtkFieldData* fd, const char* name, bool required) {
+  vtkDataArray* a = fd ? fd->GetArray(name) : nullptr;
+  if (!a) {
+    if (required) corrupt(path, std::string("field data '") + name + "' is missing");
+    return nullptr;
+  }
+  if (a->GetNumberOfTuples() != 1 || a->GetNumberOfComponents() != 1)
+    corrupt(path, std::string("field data '") + name + "' is not a single value");
+  return a;
+}
+
+double fieldDouble(const std::string& path, vtkDataArray* a, const char* name) {
+  if (a->GetDataType() != VTK_DOUBLE) corrupt(path, std::string("field data '") + name + "' is not Float64");
+  return static_cast<const double*>(a->GetVoidPointer(0))[0];
+}
+
+std::int64_t fieldInt(const std::string& path, vtkDataArray* a, const char* name) {
+  if (!isInt64(a)) corrupt(path, std::string("field data '") + name + "' is not Int64");
+  std::int64_t v;
+  std::memcpy(&v, a->GetVoidPointer(0), sizeof v);
+  return v;
+}
+
+}  // namespace
+
+template <int D>
+void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState& s) {
+  const vtkIdType n = vtkIdType(p.size());
+  vtkNew<vtkPolyData> pd;
+
+  vtkNew<vtkPoints> points;
+  points->SetData(makeArray<D>("position", p.position));
+  pd->SetPoints(points);
+
+  vtkNew<vtkTypeInt64Array> offsets, connectivity;
+  offsets->SetNumberOfTuples(n + 1);
+  connectivity->SetNumberOfTuples(n);
+  vtkTypeInt64* off = offsets->GetPointer(0);
+  vtkTypeInt64* con = connectivity->GetPointer(0);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < long(n); ++i) {
+    off[i] = i;
+    con[i] = i;
+  }
+  off[n] = n;
+  vtkNew<vtkCellArray> verts;
+  verts->SetData(offsets, connectivity);
+  pd->SetVerts(verts);
+
+  p.forEachField([&](const char* name, const auto& v) {
+    if (v.empty() && !ParticleSet<D>::isMandatory(name)) return;
+    if (vtkIdType(v.size()) != n)
+      throw std::runtime_error("cannot write '" + path + "': field '" + name + "' has " +
+                               std::to_string(v.size()) + " values for " + std::to_string(n) + " particles");
+    pd->GetPointData()->AddArray(makeArray(name, v));
+  });
+
+  vtkFieldData* fd = pd->GetFieldData();
+  addFieldValue(fd, "mass", p.mass);
+  addFieldValue(fd, "rho0", p.rho0);
+  addFieldValue(fd, "spacing", p.spacing);
+  addFieldValue(fd, "volume", p.volume());
+  addFieldValue(fd, "dimension", std::int64_t(D));
+  addFieldValue(fd, "time", s.time);
+  addFieldValue(fd, "TimeValue", s.time);
+  addFieldValue(fd, "timeIndex", std::int64_t(s.step));
+  addFieldValue(fd, "deltaT", s.deltaT);
+  addFieldValue(fd, "deltaT0", s.deltaT0);
+
+  fileops::failurePoint("write vtp", path);
+  vtkNew<vtkXMLPolyDataWriter> w;
+  vtkNew<MessageCapture> messages;
+  w->AddObserver(vtkCommand::ErrorEvent, messages);
+  w->AddObserver(vtkCommand::WarningEvent, messages);
+  w->SetFileName(path.c_str());
+  w->SetInputData(pd);
+  w->SetDataModeToAppended();
+  w->EncodeAppendedDataOff();
+  w->SetCompressorTypeToNone();
+  w->SetHeaderTypeToUInt64();
+  errno = 0;
+  int ok = w->Write();
+  if (!ok || w->GetErrorCode() != 0) {
+    int err = errno;
+    std::string why = messages->text.empty() ? "VTK writer failed" : messages->text;
+    if (err != 0) why += std::string(" (") + std::strerror(err) + ")";
+    throw std::runtime_error("cannot write '" + path + "': " + why);
+  }
+}
+
+template <int D>
+ParticleSet<D> readVtp(const std::string& path, TimeState* s) {
+  if (!fileops::isRegularFile(path))
+    throw InputError("cannot read particle file '" + path + "': " +
+                     (fileops::isDirectory(path) ? std::string("it is a folder") : std::strerror(ENOENT)));
+  vtkNew<vtkXMLPolyDataReader> r;
+  vtkNew<MessageCapture> messages;
+  r->AddObserver(vtkCommand::ErrorEvent, messages);
+  r->AddObserver(vtkCommand::WarningEvent, messages);
+  r->SetReaderErrorObserver(messages);
+  r->SetParserErrorObserver(messages);
+  r->SetFileName(path.c_str());
+  int ok = 0;
+  ok = r->GetExecutive()->Update();
+  if (!ok || !messages->text.empty() || r->GetErrorCode() != 0)
+    corrupt(path, messages->text.empty() ? "VTK reader failed" : messages->text);
+  vtkPolyData* pd = r->GetOutput();
+  if (!pd) corrupt(path, "no PolyData in file");
+
+  vtkFieldData* fd = pd->GetFieldData();
+  std::int64_t dimension = fieldInt(path, fieldArray(path, fd, "dimension", true), "dimension");
+  if (dimension != D)
+    throw InputError("particle file '" + path + "' holds a " + std::to_string(dimension) +
+                     "D particle set, but this run is " + std::to_string(D) + "D");
+
+  ParticleSet<D> p;
+  p.mass = fieldDouble(path, fieldArray(path, fd, "mass", true), "mass");
+  p.rho0 = fieldDouble(path, fieldArray(path, fd, "rho0", true), "rho0");
+  p.spacing = fieldDouble(path, fieldArray(path, fd, "spacing", true), "spacing");
+  if (s) {
+    if (auto* a = fieldArray(path, fd, "time", false)) s->time = fieldDouble(path, a, "time");
+    if (auto* a = fieldArray(path, fd, "timeIndex", false)) s->step = long(fieldInt(path, a, "timeIndex"));
+    if (auto* a = fieldArray(path, fd, "deltaT", false)) s->deltaT = fieldDouble(path, a, "deltaT");
+    if (auto* a = fieldArray(path, fd, "deltaT0", false)) s->deltaT0 = fieldDouble(path, a, "deltaT0");
+  }
+
+  const vtkIdType n = pd->GetNumberOfPoints();
+  if (n > 0) {
+    vtkDataArray* xyz = pd->GetPoints()->GetData();
+    readArray<D>(path, "position", xyz, n, p.position);
+  }
+  vtkPointData* pdata = pd->GetPointData();
+  p.forEachField([&](const char* name, auto& v) {
+    vtkAbstractArray* raw = pdata->GetAbstractArray(name);
+    if (!raw) {
+      if (ParticleSet<D>::isMandatory(name)) corrupt(path, std::string("point-data array '") + name + "' is missing");
+      return;
+    }
+    auto* a = vtkDataArray::SafeDownCast(raw);
+    if (!a) corrupt(path, std::string("point-data array '") + name + "' is not numeric");
+    readArray(path, name, a, n, v);
+  });
+  return p;
+}
+
+template void writeVtp<2>(const std::string&, const ParticleSet<2>&, const TimeState&);
+template void writeVtp<3>(const std::string&, const ParticleSet<3>&, const TimeState&);
+template ParticleSet<2> readVtp<2>(const std::string&, TimeState*);
+template ParticleSet<3> readVtp<3>(const std::string&, TimeState*);
+
+}  // namespace shizuku
