@@ -1,0 +1,43 @@
+// Advective dynamic stabilization (methods.md 9); formula in ADS.hpp.
+#include "effects/ADS.hpp"
+#include <stdexcept>
+
+namespace shizuku {
+
+template <int D>
+std::string ADS<D>::describe() const {
+  return cat("distance = ", distance_, " d0, C = ", C_, ", on free-surface and vicinity particles");
+}
+
+template <int D>
+void ADS<D>::correctPositions(FlowState<D>& s) {
+  if (delta_.size() != s.size()) throw std::logic_error("ads: allocate() was not called for this particle count");
+  const auto& nl = s.neighbours;
+  const double dAds = distance_ * s.d0;
+  const long n = long(s.size());
+  auto moved = [&](Index j) { return s.isFluid(j) && nearSurface(s.surfaceClass(j)); };
+  long count = 0;
+#pragma omp parallel for schedule(static) reduction(+ : count)
+  for (long i = 0; i < n; ++i) {
+    Vec<D> d = Vec<D>::Zero();
+    if (moved(Index(i))) {
+      for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+        const double r = nl.r[k];
+        if (!(r < dAds) || !(r > 0)) continue;
+        const double omega = moved(nl.j[k]) ? 0.5 : 1.0;
+        d += (omega * (dAds - r) / r) * nl.rij[k];
+      }
+    }
+    delta_[i] = C_ * d;
+    if (d.squaredNorm() > 0) ++count;
+  }
+  auto& x = s.particles.position;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) x[i] += delta_[i];
+  count_ = count;
+}
+
+template class ADS<2>;
+template class ADS<3>;
+
+}  // namespace shizuku

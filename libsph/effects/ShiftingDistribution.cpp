@@ -1,0 +1,80 @@
+// OPS (eqs. 11-13) and DPS (eq. 14) distribution shifts; formulas, signs and
+// keys in ShiftingDistribution.hpp (methods.md 6, 7).
+#include "effects/ShiftingDistribution.hpp"
+#include <cmath>
+
+namespace shizuku {
+namespace {
+const char* gradientName(DistributionParameters::Gradient g) {
+  switch (g) {
+    case DistributionParameters::Gradient::kernel: return "kernel";
+    case DistributionParameters::Gradient::corrected: return "corrected (SPH2 weights, non-difference)";
+    case DistributionParameters::Gradient::concentration: return "concentration (SPH2 difference form)";
+  }
+  return "?";
+}
+}  // namespace
+
+template <int D>
+std::string ShiftingDistribution<D>::describe() const {
+  if (par_.type == DistributionParameters::Type::DPS)
+    return cat("type DPS (eq. 14), C = ", par_.C, " (shift length C h), neighbours within 1.1 sqrt(D) d0");
+  return cat("type OPS (eqs. 11-13), C = ", par_.C, " (times h^2), Rp = ", par_.Rp, ", np = ", par_.np,
+             ", gradient ", gradientName(par_.gradient));
+}
+
+template <int D>
+void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) {
+  using G = DistributionParameters::Gradient;
+  const auto& nl = s.neighbours;
+  const auto& nrm = s.particles.normal;
+  const auto& rho = s.particles.density;
+  const double V = s.V(), h = s.h, invRho0 = 1.0 / s.rho0;
+  const bool ops = par_.type == DistributionParameters::Type::OPS;
+  const double invW0 = 1.0 / s.kernel.w(s.d0);
+  const double coeff = ops ? -par_.C * h * h * V : par_.C * h * V;
+  const double rStar = 1.1 * std::sqrt(double(D)) * s.d0;
+  const bool haveWeights = !s.weights.gradW.empty() && !s.weights.order.empty();
+  const long n = long(s.size());
+  long count = 0;
+#pragma omp parallel for schedule(static) reduction(+ : count)
+  for (long i = 0; i < n; ++i) {
+    if (!s.isFluid(i)) continue;
+    const SurfaceClass cls = s.surfaceClass(i);
+    const bool project = cls != SurfaceClass::interior;
+    if (project && (nrm.size() != s.size() || nrm[i].squaredNorm() < 0.25)) continue;
+    // Particles without SPH(2) weights fall back to the kernel gradient.
+    const G grad = (haveWeights && s.weights.order[i] != 255) ? par_.gradient : G::kernel;
+    const double Ci = rho[i] * invRho0;
+    Vec<D> sum = Vec<D>::Zero();
+    for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+      const double r = nl.r[k];
+      if (!(r > 0)) continue;
+      if (ops) {
+        double wv, dw;
+        s.kernel.eval(r, wv, dw);
+        const double clump = par_.Rp * std::pow(wv * invW0, par_.np);
+        const Vec<D> gradW = (dw / r) * nl.rij[k];
+        switch (grad) {
+          case G::kernel: sum += (1.0 + clump) * gradW; break;
+          case G::corrected: sum += (1.0 + clump) * s.weights.gradW[k]; break;
+          case G::concentration:
+            sum += (rho[nl.j[k]] * invRho0 - Ci) * s.weights.gradW[k] + clump * gradW;
+            break;
+        }
+      } else if (r < rStar) {
+        sum += (s.kernel.w(r) / r) * nl.rij[k];
+      }
+    }
+    Vec<D> d = coeff * sum;
+    if (project) d -= nrm[i].dot(d) * nrm[i];
+    dr[i] += d;
+    ++count;
+  }
+  count_ = count;
+}
+
+template class ShiftingDistribution<2>;
+template class ShiftingDistribution<3>;
+
+}  // namespace shizuku

@@ -1,0 +1,66 @@
+// Particle-distribution shift (the dispersion term of eq. 10):
+//
+// OPS, eqs. (11)-(13) (methods.md 6):
+//   gradC_i  = sum_{j in S_i} V [1 + Rp (W_ij / W(d0))^np] G_ij      (fluid and wall j)
+//   dr_ps    = -C h^2 gradC_i
+//   dr_dis   = dr_ps (interior),  (I - n_i n_i) dr_ps (free, splash, vicinity)
+// Sign: grad_i W_ij = W'(r) r_ij / r points from i toward j (W' < 0), so gradC_i points
+// toward denser regions and -C h^2 gradC_i moves i toward sparser ones. W(d0) is the
+// kernel at distance d0 (methods.md 2, 14.2). `gradient` chooses G_ij:
+//   kernel (default): the plain kernel gradient grad_i W_ij (Lind et al. 2012).
+//   corrected: the SPH(2) weights s.weights.gradW in the same non-difference sum, as the
+//     seed writes. Measured UNSTABLE (docs/shifting.md): a corrected gradient is exact
+//     for quadratics, so in the non-difference sum it cancels the smooth (long-wave)
+//     part of the concentration gradient; the density spread of a perturbed lattice
+//     grows (0.032 -> 0.10 in 40 shifts). Kept only to reproduce the literal reading.
+//   concentration: the SPH(2) gradient of the concentration field C = <rho>/rho0 in
+//     difference form, sum V (C_j - C_i) gradW_ij, plus the anti-clumping part
+//     Rp sum V (W_ij/W(d0))^np grad_i W_ij with the kernel gradient (a pair repulsion).
+//
+// DPS, eq. (14) with the missing length factor C h (methods.md 7, 14.3):
+//   dr_dis = C h sum_{j in S*_i} V W_ij e_ij,  e_ij = r_ij / |r_ij|, |r_ij| < 1.1 sqrt(D) d0
+// (short-range repulsion; fluid and wall j). The same tangential projection as OPS is
+// applied on free, splash and vicinity particles so that neither type pushes particles
+// through the free surface.
+//
+// A free/splash/vicinity particle whose normal is undefined (zero) gets no shift.
+// Wall particles are never shifted.
+// Reads (system/sphSchemes, shifting/distribution):
+//   type OPS|DPS; C 0.2; Rp 0.2; np 4; gradient kernel|corrected|concentration;
+#pragma once
+#include "effects/Effect.hpp"
+
+namespace shizuku {
+
+struct DistributionParameters {
+  enum class Type { OPS, DPS };
+  Type type = Type::OPS;
+  double C = 0.2;               // C_dis (OPS: must be <= 0.5, diffusion stability)
+  double Rp = 0.2;              // anti-clumping amplitude
+  double np = 4;                // anti-clumping exponent
+  enum class Gradient { kernel, corrected, concentration };
+  Gradient gradient = Gradient::kernel;
+};
+
+template <int D>
+class ShiftingDistribution final : public Effect<D> {
+ public:
+  explicit ShiftingDistribution(const DistributionParameters& p) : par_(p) {}
+  std::string name() const override { return "shifting/distribution"; }
+  EffectStage stage() const override { return EffectStage::shift; }
+  std::string describe() const override;
+  EffectNeeds needs() const override {
+    EffectNeeds n;
+    n.normals = true;
+    return n;
+  }
+  void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
+  long lastActionCount() const override { return count_; }
+  const DistributionParameters& parameters() const { return par_; }
+
+ private:
+  DistributionParameters par_;
+  long count_ = 0;
+};
+
+}  // namespace shizuku

@@ -1,0 +1,43 @@
+// Volume-conservation shift, eq. (17); formula and sign in VolumeCorrection.hpp.
+#include "effects/VolumeCorrection.hpp"
+#include <cmath>
+
+namespace shizuku {
+
+template <int D>
+std::string VolumeCorrection<D>::describe() const {
+  return cat("C = ", C_, " (shift length C h per unit density error), interior particles, "
+             "neighbours within 1.1 sqrt(D) d0, wall terms zero");
+}
+
+template <int D>
+void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) {
+  const auto& nl = s.neighbours;
+  const auto& rho = s.particles.density;
+  const double invRho0 = 1.0 / s.rho0;
+  const double rStar = 1.1 * std::sqrt(double(D)) * s.d0;
+  const double coeff = C_ * s.h;
+  const long n = long(s.size());
+  long count = 0;
+#pragma omp parallel for schedule(static) reduction(+ : count)
+  for (long i = 0; i < n; ++i) {
+    if (!s.isFluid(i) || s.surfaceClass(i) != SurfaceClass::interior) continue;
+    const double ei = rho[i] * invRho0 - 1.0;
+    Vec<D> sum = Vec<D>::Zero();
+    for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+      const double r = nl.r[k];
+      if (!(r < rStar) || !(r > 0)) continue;
+      const Index j = nl.j[k];
+      const double ej = s.isFluid(j) ? rho[j] * invRho0 - 1.0 : 0.0;
+      sum += ((ei + ej) / r) * nl.rij[k];
+    }
+    dr[i] += coeff * sum;
+    ++count;
+  }
+  count_ = count;
+}
+
+template class VolumeCorrection<2>;
+template class VolumeCorrection<3>;
+
+}  // namespace shizuku

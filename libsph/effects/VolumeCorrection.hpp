@@ -1,0 +1,34 @@
+// Volume-conservation shift, eq. (17) with the summation density of eq. (18)
+// (methods.md 7):
+//   dr_vol_i = C h sum_{j in S*_i} (<rho>_i/rho0 - 1 + <rho>_j/rho0 - 1) e_ij,   i interior fluid,
+//   S*_i = {j != i : |r_ij| < 1.1 sqrt(D) d0},   e_ij = (r_i - r_j) / |r_i - r_j| (from j to i).
+// Sign (checked, methods.md 14.4): with e_ij from j to i an under-dense pair
+// (negative bracket) moves i toward j, so an expanded region contracts and a
+// compressed one expands; the opposite sign would be anti-conservative.
+// Wall neighbours are in S*_i with their own term set to zero (<rho>_w := rho0) so
+// that an interior particle next to a wall sees a symmetric neighbourhood.
+// <rho> is s.particles.density (computed by the solver at the current positions,
+// self term and walls included); rho0 = s.rho0 (masses calibrated on the lattice).
+// Reads (system/sphSchemes, shifting/volumeCorrection): C 0.1;
+#pragma once
+#include "effects/Effect.hpp"
+
+namespace shizuku {
+
+template <int D>
+class VolumeCorrection final : public Effect<D> {
+ public:
+  explicit VolumeCorrection(double C) : C_(C) {}
+  std::string name() const override { return "shifting/volumeCorrection"; }
+  EffectStage stage() const override { return EffectStage::shift; }
+  std::string describe() const override;
+  void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
+  long lastActionCount() const override { return count_; }
+  double coefficient() const { return C_; }
+
+ private:
+  double C_;
+  long count_ = 0;
+};
+
+}  // namespace shizuku

@@ -1,0 +1,31 @@
+// XSPH advection velocity (methods.md 10); formula in XSPH.hpp.
+#include "effects/XSPH.hpp"
+
+namespace shizuku {
+
+template <int D>
+void XSPH<D>::addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<D>>& u,
+                                   std::vector<Vec<D>>& du) {
+  const auto& nl = s.neighbours;
+  const auto& w = s.weights.w;
+  const double c = epsilon_ * s.V();
+  const long n = long(s.size());
+  long count = 0;
+#pragma omp parallel for schedule(static) reduction(+ : count)
+  for (long i = 0; i < n; ++i) {
+    if (!s.isFluid(i) || !nearSurface(s.surfaceClass(i))) continue;
+    Vec<D> sum = Vec<D>::Zero();
+    for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+      const Index j = nl.j[k];
+      if (s.isFluid(j)) sum += w[k] * (u[j] - u[i]);
+    }
+    du[i] += c * sum;
+    ++count;
+  }
+  count_ = count;
+}
+
+template class XSPH<2>;
+template class XSPH<3>;
+
+}  // namespace shizuku
