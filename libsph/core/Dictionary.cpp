@@ -57,8 +57,16 @@ const DictValue* Dictionary::find(const std::string& key) const {
 
 const DictValue& Dictionary::require(const std::string& key, const std::string& expected) const {
   const DictValue* v = find(key);
-  if (!v)
-    error(key, "missing in dictionary '" + name_ + "'" + (expected.empty() ? "" : " (expected " + expected + ")"));
+  if (!v) {
+    std::string m = "missing in dictionary '" + name_ + "'" + (expected.empty() ? "" : " (expected " + expected + ")");
+    std::vector<std::string> unread;  // a present keyword nobody asked for may be this one misspelt
+    for (const auto& k : order_)
+      if (!queried_.count(k)) unread.push_back(k);
+    const std::string near = closestMatch(key, unread);
+    if (!near.empty())
+      m += "; '" + near + "' (line " + std::to_string(location(near).line) + ") looks like a misspelling of it";
+    error(key, m);
+  }
   return *v;
 }
 
@@ -268,6 +276,14 @@ std::vector<std::string> Dictionary::getWordList(const std::string& key) const {
 }
 
 // --- read tracking --------------------------------------------------------------
+
+void Dictionary::markAllRead() const {
+  for (const auto& key : order_) {
+    queried_.insert(key);
+    const DictValue& v = entries_.at(key);
+    if (v.kind == DictValue::Kind::dict) v.dict->markAllRead();
+  }
+}
 
 void Dictionary::checkAllRead() const {
   for (const auto& key : order_) {

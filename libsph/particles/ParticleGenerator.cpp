@@ -1,0 +1,488 @@
+// Builds the initial particle set from system/particlesDict: fluid boxes and
+// circles on the lattice (i + 1/2) d0, wall boxes with `layers` rows outside
+// the wall surface (methods.md 11), removal of fluid that overlaps walls (a
+// cell grid, O(N)), initial velocities (uniform, rigid rotation, linear,
+// muParser expression), and the periodic box. Every rule and key is listed in
+// ParticleGenerator.hpp.
+#include "particles/ParticleGenerator.hpp"
+#include <muParser.h>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+namespace shizuku {
+
+namespace {
+
+constexpr double kSlack = 1e-9;  // round-off slack, in units of d0
+
+std::string fmt(double x) {
+  std::ostringstream s;
+  s.precision(10);
+  s << x;
+  return s.str();
+}
+template <int D> std::string fmt(const Vec<D>& v) {
+  std::string s = "(";
+  for (int k = 0; k < D; ++k) s += (k ? " " : "") + fmt(v[k]);
+  return s + ")";
+}
+const char* axisName(int k) { return k == 0 ? "x" : k == 1 ? "y" : "z"; }
+
+// Names of the box faces in the order -x +x -y +y -z +z.
+std::vector<std::string> faceNames(int D) {
+  std::vector<std::string> f = {"left", "right", "bottom", "top", "front", "back"};
+  f.resize(2 * D);
+  return f;
+}
+
+// Calls f(i) for every integer index i with lo <= i < hi, x fastest.
+template <int D, class F>
+void forEachIndex(const std::array<long, D>& lo, const std::array<long, D>& hi, F&& f) {
+  for (int k = 0; k < D; ++k)
+    if (hi[k] <= lo[k]) return;
+  std::array<long, D> i = lo;
+  for (;;) {
+    f(i);
+    int k = 0;
+    for (; k < D; ++k) {
+      if (++i[k] < hi[k]) break;
+      i[k] = lo[k];
+    }
+    if (k == D) return;
+  }
+}
+
+// Points hashed into cubic cells of size h: "is any point closer than r <= h?"
+template <int D>
+class PointGrid {
+ public:
+  PointGrid(double h, const std::vector<Vec<D>>& points) : h_(h), points_(points) {}
+  void insert(Index i) { cells_[cellOf(points_[i])].push_back(i); }
+  bool anyCloserThan(const Vec<D>& x, double r) const {
+    const Cell c = cellOf(x);
+    std::array<long, D> lo, hi;
+    for (int k = 0; k < D; ++k) { lo[k] = c[k] - 1; hi[k] = c[k] + 2; }
+    bool hit = false;
+    forEachIndex<D>(lo, hi, [&](const Cell& n) {
+      if (hit) return;
+      auto it = cells_.find(n);
+      if (it == cells_.end()) return;
+      for (Index j : it->second)
+        if ((points_[j] - x).squaredNorm() < r * r) { hit = true; return; }
+    });
+    return hit;
+  }
+
+ private:
+  using Cell = std::array<long, D>;
+  struct Hash {
+    std::size_t operator()(const Cell& c) const {
+      std::size_t h = 0;
+      for (int k = 0; k < D; ++k) h = h * 1000003u ^ std::hash<long>()(c[k]);
+      return h;
+    }
+  };
+  Cell cellOf(const Vec<D>& x) const {
+    Cell c;
+    for (int k = 0; k < D; ++k) c[k] = long(std::floor(x[k] / h_));
+    return c;
+  }
+  double h_;
+  const std::vector<Vec<D>>& points_;
+  std::unordered_map<Cell, std::vector<Index>, Hash> cells_;
+};
+
+template <int D>
+struct Region {
+  std::string name;
+  const Dictionary* dict = nullptr;
+  bool fluid = true, circle = false;
+  Vec<D> min = Vec<D>::Zero(), max = Vec<D>::Zero();  // fluid box: the filled cells; wall: its surface
+  Vec<D> centre = Vec<D>::Zero();
+  double radius = 0;
+  std::array<long, D> cells{};            // box: cells per direction
+  int layers = 0;
+  std::array<bool, 2 * D> open{};         // wall faces -x +x -y +y -z +z
+  Vec<D> outerMin = Vec<D>::Zero(), outerMax = Vec<D>::Zero();  // wall: surface grown by the layers
+  std::vector<Vec<D>> points;
+
+  // Inside the wall's layer region: within the grown box, not strictly inside the surface.
+  bool inLayers(const Vec<D>& x, double tol) const {
+    bool inner = true;
+    for (int k = 0; k < D; ++k) {
+      if (x[k] <= outerMin[k] + tol || x[k] >= outerMax[k] - tol) return false;
+      if (x[k] <= min[k] + tol || x[k] >= max[k] - tol) inner = false;
+    }
+    return !inner;
+  }
+};
+
+template <int D>
+bool hasKey(const Dictionary& d, const std::string& key) {
+  const auto k = d.keys();
+  return std::find(k.begin(), k.end(), key) != k.end();
+}
+
+template <int D>
+void readBox(const Dictionary& r, Region<D>& reg) {
+  reg.min = r.getVector<D>("min", dim::length);
+  reg.max = r.getVector<D>("max", dim::length);
+  for (int k = 0; k < D; ++k)
+    if (!(reg.max[k] > reg.min[k]))
+      r.error("max", "max " + fmt<D>(reg.max) + " must exceed min " + fmt<D>(reg.min) + " in every direction (" +
+                         axisName(k) + ")");
+}
+
+template <int D>
+Region<D> readFluid(const Dictionary& r, const std::string& name, double d0) {
+  Region<D> reg;
+  reg.name = name;
+  reg.dict = &r;
+  for (const char* k : {"layers", "open"})
+    if (hasKey<D>(r, k)) r.error(k, std::string("only wall regions take '") + k + "'");
+  const std::string shape = r.getOption("shape", {"box", "circle", "sphere"});
+  if (shape == "box") {
+    readBox<D>(r, reg);
+    for (int k = 0; k < D; ++k) {
+      reg.cells[k] = long(std::floor((reg.max[k] - reg.min[k]) / d0 + kSlack));
+      if (reg.cells[k] < 1)
+        r.error("max", std::string("the box is thinner than one spacing (d0 = ") + fmt(d0) + " m) in " +
+                           axisName(k));
+      reg.max[k] = reg.min[k] + reg.cells[k] * d0;  // the filled part
+    }
+  } else {
+    reg.circle = true;
+    reg.centre = r.getVector<D>("centre", dim::length);
+    reg.radius = r.getScalar("radius", dim::length);
+    if (!(reg.radius > 0)) r.error("radius", "must be positive, found " + fmt(reg.radius));
+  }
+  return reg;
+}
+
+template <int D>
+Region<D> readWall(const Dictionary& r, const std::string& name, double d0) {
+  Region<D> reg;
+  reg.name = name;
+  reg.dict = &r;
+  reg.fluid = false;
+  if (hasKey<D>(r, "velocity")) r.error("velocity", "wall regions are fixed; velocity is for fluid regions only");
+  r.getOption("shape", {"box"});
+  readBox<D>(r, reg);
+  reg.layers = r.getIntOr("layers", 3);
+  if (reg.layers < 1) r.error("layers", "must be at least 1, found " + std::to_string(reg.layers));
+  if (r.found("open")) {
+    const auto faces = faceNames(D);
+    for (const auto& w : r.getWordList("open")) {
+      auto it = std::find(faces.begin(), faces.end(), w);
+      if (it == faces.end()) {
+        std::string list;
+        for (const auto& f : faces) list += (list.empty() ? "" : " ") + f;
+        const std::string near = closestMatch(w, faces);
+        r.error("open", "'" + w + "' is not a face (" + list + ")" + (near.empty() ? "" : "; did you mean '" + near + "'?"));
+      }
+      reg.open[it - faces.begin()] = true;
+    }
+  }
+  for (int k = 0; k < D; ++k) {
+    const double n = (reg.max[k] - reg.min[k]) / d0;
+    reg.cells[k] = std::lround(n);
+    if (std::abs(n - double(reg.cells[k])) > 1e-6)
+      r.error("max", std::string("the wall box size in ") + axisName(k) + " (" + fmt(reg.max[k] - reg.min[k]) +
+                         " m) is not a whole number of spacings (d0 = " + fmt(d0) +
+                         " m), so the wall particles would not sit on one lattice");
+    reg.outerMin[k] = reg.min[k] - (reg.open[2 * k] ? 0 : reg.layers * d0);
+    reg.outerMax[k] = reg.max[k] + (reg.open[2 * k + 1] ? 0 : reg.layers * d0);
+  }
+  return reg;
+}
+
+template <int D>
+void fillFluid(Region<D>& reg, double d0) {
+  if (!reg.circle) {
+    std::array<long, D> lo{};
+    forEachIndex<D>(lo, reg.cells, [&](const std::array<long, D>& i) {
+      Vec<D> x;
+      for (int k = 0; k < D; ++k) x[k] = reg.min[k] + (double(i[k]) + 0.5) * d0;
+      reg.points.push_back(x);
+    });
+    return;
+  }
+  const long m = long(std::ceil(reg.radius / d0)) + 1;
+  std::array<long, D> lo, hi;
+  lo.fill(-m);
+  hi.fill(m);
+  const double rMax = reg.radius - kSlack * d0;
+  forEachIndex<D>(lo, hi, [&](const std::array<long, D>& i) {
+    Vec<D> x;
+    for (int k = 0; k < D; ++k) x[k] = reg.centre[k] + (double(i[k]) + 0.5) * d0;
+    if ((x - reg.centre).norm() < rMax) reg.points.push_back(x);
+  });
+}
+
+template <int D>
+void fillWall(Region<D>& reg, double d0) {
+  std::array<long, D> lo, hi;
+  for (int k = 0; k < D; ++k) {
+    lo[k] = reg.open[2 * k] ? 0 : -reg.layers;
+    hi[k] = reg.cells[k] + (reg.open[2 * k + 1] ? 0 : reg.layers);
+  }
+  forEachIndex<D>(lo, hi, [&](const std::array<long, D>& i) {
+    bool inside = true;
+    for (int k = 0; k < D; ++k) inside = inside && i[k] >= 0 && i[k] < reg.cells[k];
+    if (inside) return;
+    Vec<D> x;
+    for (int k = 0; k < D; ++k) x[k] = reg.min[k] + (double(i[k]) + 0.5) * d0;
+    reg.points.push_back(x);
+  });
+}
+
+// Do the shapes of two fluid regions overlap (more than round-off)?
+template <int D>
+bool overlap(const Region<D>& a, const Region<D>& b, double tol) {
+  if (!a.circle && !b.circle) {
+    for (int k = 0; k < D; ++k)
+      if (std::min(a.max[k], b.max[k]) - std::max(a.min[k], b.min[k]) <= tol) return false;
+    return true;
+  }
+  if (a.circle && b.circle) return (a.centre - b.centre).norm() < a.radius + b.radius - tol;
+  const Region<D>& box = a.circle ? b : a;
+  const Region<D>& c = a.circle ? a : b;
+  const Vec<D> nearest = c.centre.cwiseMax(box.min).cwiseMin(box.max);
+  return (nearest - c.centre).norm() < c.radius - tol;
+}
+
+// muParser expressions of x y z with the constant pi, one per component.
+template <int D>
+struct Expressions {
+  double xyz[3] = {0, 0, 0};
+  std::array<mu::Parser, D> parser;
+  explicit Expressions(const std::vector<std::string>& text) {
+    for (int k = 0; k < D; ++k) {
+      parser[k].DefineVar("x", &xyz[0]);
+      parser[k].DefineVar("y", &xyz[1]);
+      parser[k].DefineVar("z", &xyz[2]);
+      parser[k].DefineConst("pi", M_PI);
+      parser[k].SetExpr(text[k]);
+    }
+  }
+  Vec<D> operator()(const Vec<D>& x) {
+    for (int k = 0; k < D; ++k) xyz[k] = x[k];
+    Vec<D> u;
+    for (int k = 0; k < D; ++k) u[k] = parser[k].Eval();
+    return u;
+  }
+};
+
+// "muParser: <message> in expression "<text>"", without muParser's trailing '.' and ' '.
+std::string muMessage(const mu::Parser::exception_type& err) {
+  std::string m = err.GetMsg(), e = err.GetExpr();
+  while (!m.empty() && (m.back() == '.' || m.back() == ' ')) m.pop_back();
+  while (!e.empty() && e.back() == ' ') e.pop_back();
+  return "muParser: " + m + " in expression \"" + e + "\"";
+}
+
+template <int D>
+void expressionVelocity(const Dictionary& v, const std::vector<Vec<D>>& x, std::vector<Vec<D>>& u) {
+  const std::vector<std::string> text = v.getWordList("value");
+  if (int(text.size()) != D)
+    v.error("value", "expected " + std::to_string(D) + " expressions, one per velocity component, found " +
+                         std::to_string(text.size()));
+  try {  // syntax errors first, once, even for an empty region
+    Expressions<D> e(text);
+    e(Vec<D>::Zero());
+  } catch (const mu::Parser::exception_type& err) {
+    v.error("value", muMessage(err));
+  }
+  // Evaluation errors: the one at the lowest particle index is reported.
+  std::size_t firstBad = x.size();
+  std::string failure;
+#pragma omp parallel
+  {
+    Expressions<D> e(text);
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      std::string m;
+      try {
+        u[i] = e(x[i]);
+        if (!u[i].allFinite()) m = "the expressions give " + fmt<D>(u[i]) + " at " + fmt<D>(x[i]);
+      } catch (const mu::Parser::exception_type& err) {
+        m = muMessage(err);
+      }
+      if (!m.empty()) {
+#pragma omp critical(shizuku_expression_failure)
+        if (i < firstBad) { firstBad = i; failure = m; }
+      }
+    }
+  }
+  if (!failure.empty()) v.error("value", failure);
+}
+
+template <int D>
+void assignVelocity(const Region<D>& reg, std::vector<Vec<D>>& u) {
+  u.assign(reg.points.size(), Vec<D>::Zero());
+  const Dictionary* v = reg.dict->subDictPtr("velocity");
+  if (!v) return;
+  const std::vector<Vec<D>>& x = reg.points;
+  const long n = long(x.size());
+  const std::string type = v->getOption("type", {"uniform", "rigidRotation", "linear", "expression"});
+  if (type == "uniform") {
+    const Vec<D> value = v->getVector<D>("value", dim::velocity);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) u[i] = value;
+  } else if (type == "rigidRotation") {
+    const Vec<D> c = v->getVectorOr<D>("centre", Vec<D>::Zero(), dim::length);
+    if constexpr (D == 2) {
+      const double w = v->getScalar("omega", dim::inverseTime);
+#pragma omp parallel for schedule(static)
+      for (long i = 0; i < n; ++i) u[i] = Vec<2>(-w * (x[i][1] - c[1]), w * (x[i][0] - c[0]));
+    } else if constexpr (D == 3) {
+      const Vec<3> w = v->getVector<3>("omega", dim::inverseTime);
+#pragma omp parallel for schedule(static)
+      for (long i = 0; i < n; ++i) u[i] = w.cross(x[i] - c);
+    } else {
+      v->error("type", "rigidRotation needs 2 or 3 dimensions");
+    }
+  } else if (type == "linear") {
+    const Mat<D> G = v->getMatrix<D>("gradient", dim::inverseTime);
+    const Vec<D> c = v->getVectorOr<D>("centre", Vec<D>::Zero(), dim::length);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) u[i] = G * (x[i] - c);
+  } else {
+    expressionVelocity<D>(*v, x, u);
+  }
+}
+
+template <int D>
+PeriodicBox<D> readPeriodic(const Dictionary& dict, double d0) {
+  PeriodicBox<D> box;
+  const Dictionary* p = dict.subDictPtr("periodic");
+  if (!p) return box;
+  box.lo = p->getVector<D>("min", dim::length);
+  box.hi = p->getVector<D>("max", dim::length);
+  std::vector<std::string> axes;
+  for (int k = 0; k < D; ++k) axes.push_back(axisName(k));
+  std::vector<std::string> dirs = axes;
+  if (p->found("directions")) dirs = p->getWordList("directions");
+  for (const auto& w : dirs) {
+    auto it = std::find(axes.begin(), axes.end(), w);
+    if (it == axes.end()) {
+      const std::string near = closestMatch(w, axes);
+      p->error("directions", "'" + w + "' is not a direction of this " + std::to_string(D) + "D case" +
+                                 (near.empty() ? "" : "; did you mean '" + near + "'?"));
+    }
+    box.periodic[it - axes.begin()] = true;
+  }
+  for (int k = 0; k < D; ++k) {
+    if (!(box.hi[k] > box.lo[k]))
+      p->error("max", "max " + fmt<D>(box.hi) + " must exceed min " + fmt<D>(box.lo) + " in every direction");
+    const double n = (box.hi[k] - box.lo[k]) / d0;
+    if (box.periodic[k] && std::abs(n - std::round(n)) > 1e-6)
+      p->error("max", std::string("the periodic length in ") + axisName(k) + " (" + fmt(box.hi[k] - box.lo[k]) +
+                          " m) is not a whole number of spacings (d0 = " + fmt(d0) + " m)");
+  }
+  return box;
+}
+
+}  // namespace
+
+template <int D>
+GeneratedParticles<D> generateParticles(const Dictionary& dict) {
+  GeneratedParticles<D> out;
+  const double d0 = dict.getScalar("spacing", dim::length);
+  if (!(d0 > 0)) dict.error("spacing", "must be positive, found " + fmt(d0));
+  const double tol = kSlack * d0;
+  out.periodic = readPeriodic<D>(dict, d0);
+
+  // 1. Read every region, in file order.
+  const Dictionary& regionsDict = dict.subDict("regions");
+  std::vector<Region<D>> fluids, walls;
+  for (const auto& name : regionsDict.keys()) {
+    const Dictionary& r = regionsDict.subDict(name);
+    if (r.getOption("type", {"fluid", "wall"}) == "fluid")
+      fluids.push_back(readFluid<D>(r, name, d0));
+    else
+      walls.push_back(readWall<D>(r, name, d0));
+  }
+  if (fluids.empty()) regionsDict.error("regions", "no fluid region (a region with 'type fluid;') is defined");
+  for (std::size_t b = 0; b < fluids.size(); ++b)
+    for (std::size_t a = 0; a < b; ++a)
+      if (overlap(fluids[a], fluids[b], tol))
+        regionsDict.error(fluids[b].name, "fluid region '" + fluids[b].name + "' overlaps fluid region '" +
+                                              fluids[a].name + "' (" + regionsDict.location(fluids[a].name).str() +
+                                              ")");
+
+  // 2. Wall particles; a particle closer than d0/2 to an earlier one is dropped.
+  std::vector<Vec<D>> wallPoints;
+  PointGrid<D> wallGrid(0.5 * d0, wallPoints);
+  for (auto& w : walls) {
+    fillWall(w, d0);
+    wallPoints.reserve(wallPoints.size() + w.points.size());
+    for (const auto& x : w.points) {
+      if (wallGrid.anyCloserThan(x, 0.5 * d0 - tol)) continue;
+      wallPoints.push_back(x);
+      wallGrid.insert(Index(wallPoints.size() - 1));
+    }
+  }
+
+  // 3. Fluid particles, minus those inside or next to a wall; velocities.
+  std::vector<Vec<D>> fluidPoints, fluidVelocity;
+  for (auto& f : fluids) {
+    fillFluid(f, d0);
+    if (f.points.empty())
+      regionsDict.error(f.name, "fluid region '" + f.name + "' holds no particle (radius " + fmt(f.radius) +
+                                    " m against spacing " + fmt(d0) + " m)");
+    const long n = long(f.points.size());
+    std::vector<char> keep(n, 1);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      const Vec<D>& x = f.points[i];
+      for (const auto& w : walls)
+        if (w.inLayers(x, tol)) keep[i] = 0;
+      if (keep[i] && wallGrid.anyCloserThan(x, 0.5 * d0 - tol)) keep[i] = 0;
+    }
+    std::vector<Vec<D>> kept;
+    for (long i = 0; i < n; ++i)
+      if (keep[i]) kept.push_back(f.points[i]);
+    if (kept.empty())
+      regionsDict.error(f.name, "fluid region '" + f.name + "' lies entirely inside walls: all " +
+                                    std::to_string(n) + " of its particles were removed");
+    f.points = std::move(kept);
+    for (const auto& x : f.points)
+      for (int k = 0; k < D; ++k)
+        if (out.periodic.periodic[k] && (x[k] < out.periodic.lo[k] - tol || x[k] >= out.periodic.hi[k] - tol))
+          regionsDict.error(f.name, "fluid region '" + f.name + "' has a particle at " + fmt<D>(x) +
+                                        ", outside the periodic box in " + axisName(k) + " [" +
+                                        fmt(out.periodic.lo[k]) + ", " + fmt(out.periodic.hi[k]) + ")");
+    std::vector<Vec<D>> u;
+    assignVelocity(f, u);
+    fluidPoints.insert(fluidPoints.end(), f.points.begin(), f.points.end());
+    fluidVelocity.insert(fluidVelocity.end(), u.begin(), u.end());
+  }
+  dict.checkAllRead();
+
+  // 4. The particle set: fluid first, then walls.
+  ParticleSet<D>& set = out.set;
+  const std::size_t nf = fluidPoints.size(), nw = wallPoints.size(), n = nf + nw;
+  set.resize(n);
+  set.spacing = d0;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < long(n); ++i) {
+    const bool fluid = std::size_t(i) < nf;
+    set.position[i] = fluid ? fluidPoints[i] : wallPoints[i - nf];
+    set.velocity[i] = fluid ? fluidVelocity[i] : Vec<D>::Zero();
+    set.type[i] = std::uint8_t(fluid ? ParticleType::fluid : ParticleType::wall);
+    set.surface[i] = std::uint8_t(SurfaceClass::interior);
+    set.pressure[i] = 0;
+    set.density[i] = 0;
+    set.id[i] = i;
+  }
+  return out;
+}
+
+template GeneratedParticles<2> generateParticles<2>(const Dictionary&);
+template GeneratedParticles<3> generateParticles<3>(const Dictionary&);
+
+}  // namespace shizuku

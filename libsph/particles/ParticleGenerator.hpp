@@ -1,0 +1,71 @@
+// Initial particles from system/particlesDict (design.md 1.2; lattice and
+// wall layers as methods.md section 11: fluid at (i + 1/2) d0 from a wall
+// line, dummy layers at -(k + 1/2) d0, k = 0..layers-1).
+//
+// Keys read:
+//   spacing  d0 (a length, > 0)
+//   regions { <name> { type fluid|wall; shape box|circle; ... } }   (in file order)
+//   periodic { min (..); max (..); directions (x y); }              (optional)
+//
+// Fluid regions
+//   shape box:    min, max. Particles at the cell centres min + (i + 1/2) d0,
+//                 i = 0 .. n-1 with n = floor((max - min)/d0) per direction
+//                 (1e-9 slack for round-off). If the size is not a whole
+//                 number of spacings, the cells are filled from `min` and the
+//                 strip thinner than d0 left at the `max` side stays empty;
+//                 this is not reported.
+//   shape circle: centre, radius (a sphere in 3D; `sphere` is accepted as
+//                 another name). Lattice: centre + (i + 1/2) d0 in every
+//                 direction, i any integer, i.e. the lattice of a box whose
+//                 faces lie a whole number of spacings from the centre; points
+//                 kept when strictly inside: |x - centre| < radius - 1e-9 d0.
+//                 The disc is symmetric under x -> -x, y -> -y about centre.
+//   velocity { type uniform; value (..); }                  U = value
+//            { type rigidRotation; omega w; centre (..); }  2D: U = w (-(y-cy), x-cx),
+//                 counter-clockwise for w > 0 (right-hand rule about +z; the
+//                 paper's clockwise rotating patch is omega -1 [1/s]);
+//                 3D: omega is a vector, U = omega x (x - c). centre defaults to 0.
+//            { type linear; gradient ((a b) (c d)); centre (..); }  U = G (x - c),
+//                 G written row by row, centre defaults to 0.
+//            { type expression; value ("f_x" "f_y"); }  muParser expressions of
+//                 x y z (SI) with the constant pi, one per component.
+//            Absent: U = 0.
+//
+// Wall regions
+//   shape box: min, max are the wall SURFACE (the inner faces); `layers N`
+//   (default 3) rows of particles are built outside it on the lattice
+//   min + (i + 1/2) d0, corners included. `open (top)` lists faces that get no
+//   layers: left right bottom top (-x +x -y +y), in 3D also front back
+//   (-z +z); on an open side the other walls end at the box edge. The box
+//   size must be a whole number of spacings (else InputError). Wall particles
+//   closer than 0.5 d0 to an earlier wall particle are dropped (walls that
+//   share layers do not double them). Wall velocity is 0.
+//
+// Fluid particles closer than 0.5 d0 to a wall particle, or inside a wall's
+// layer region (the box grown by `layers` d0 on its closed sides, minus the
+// open interior), are removed. Errors (InputError, naming file, line and
+// keyword): spacing <= 0, two fluid regions whose shapes overlap (both are
+// named), a fluid region left empty, no fluid at all, a fluid particle outside
+// the periodic box in a periodic direction, a periodic length that is not a
+// whole number of spacings, unknown keywords (checkAllRead on particlesDict).
+//
+// Output: fluid particles first (regions in file order, x fastest), then wall
+// particles; id = index; pressure, density, surface = 0; spacing = d0. Mass
+// and rho0 are set later by the solver.
+#pragma once
+#include "core/Dictionary.hpp"
+#include "particles/NeighbourList.hpp"
+#include "particles/ParticleSet.hpp"
+
+namespace shizuku {
+
+template <int D>
+struct GeneratedParticles {
+  ParticleSet<D> set;
+  PeriodicBox<D> periodic;
+};
+
+template <int D>
+GeneratedParticles<D> generateParticles(const Dictionary& particlesDict);
+
+}  // namespace shizuku
