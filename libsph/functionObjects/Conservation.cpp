@@ -1,0 +1,82 @@
+// Function object `conservation`: see Conservation.hpp (design.md 1.3).
+#include "functionObjects/Conservation.hpp"
+
+namespace shizuku {
+
+namespace {
+template <int D>
+struct Sums {
+  double volume = 0, kinetic = 0, count = 0;
+  Vec<D> momentum = Vec<D>::Zero();
+  Vec<3> angular = Vec<3>::Zero();
+  Sums& operator+=(const Sums& o) {
+    volume += o.volume; kinetic += o.kinetic; count += o.count;
+    momentum += o.momentum; angular += o.angular;
+    return *this;
+  }
+};
+
+template <int D> Vec<3> lift(const Vec<D>& v) {
+  Vec<3> r = Vec<3>::Zero();
+  r.template head<D>() = v;
+  return r;
+}
+}  // namespace
+
+template <int D>
+Conservation<D>::Conservation(const std::string& name, const Dictionary& dict)
+    : SampledFunctionObject<D>(name, "conservation", dict) {}
+
+template <int D>
+ConservationValues<D> Conservation<D>::compute(const FlowState<D>& s) {
+  const auto& p = s.particles;
+  const double m = p.mass;
+  thread_local std::vector<Sums<D>> partial;
+  const Sums<D> t = blockReduce(p.size(), partial, [&](Sums<D>& a, std::size_t i) {
+    if (!p.isFluid(i)) return;
+    const Vec<D>& u = p.velocity[i];
+    a.count += 1;
+    a.volume += m / p.density[i];
+    a.kinetic += 0.5 * m * u.squaredNorm();
+    a.momentum += m * u;
+    a.angular += m * lift<D>(p.position[i]).cross(lift<D>(u));
+  });
+  ConservationValues<D> v;
+  v.volume = t.volume;
+  v.nominalVolume = t.count * m / s.rho0;
+  v.kineticEnergy = t.kinetic;
+  v.momentum = t.momentum;
+  if constexpr (D == 2) v.angularMomentum[0] = t.angular[2];
+  else v.angularMomentum = t.angular;
+  return v;
+}
+
+template <int D>
+void Conservation<D>::open(const FlowState<D>&, const RunInfo& info) {
+  file_.emplace(this->makeFile(info, "conservation.dat"));
+  file_->comment(cat("conservation of the fluid particles (walls excluded), ", D, "D",
+                     D == 2 ? ", per unit depth" : "", "\n",
+                     "volume = sum m/<rho>_i (eq. 18); nominalVolume = N_fluid m/rho0; "
+                     "kineticEnergy = sum m|u|^2/2;\n",
+                     "momentum = sum m u; angularMomentum = sum m r x u about the origin",
+                     D == 2 ? " (z component)" : ""));
+  file_->columns({"time", "volume", "nominalVolume", "kineticEnergy", "momentum", "angularMomentum"},
+                 {"s", units::volume(D), units::volume(D), units::energy(D), units::momentum(D),
+                  units::angularMomentum(D)});
+}
+
+template <int D>
+void Conservation<D>::sample(const FlowState<D>& s, const RunInfo&) {
+  const auto v = compute(s);
+  using F = PostProcessingFile;
+  std::string row = F::number(s.time) + " " + F::number(v.volume) + " " + F::number(v.nominalVolume) + " " +
+                    F::number(v.kineticEnergy) + " " + F::vector<D>(v.momentum) + " ";
+  if constexpr (D == 2) row += F::number(v.angularMomentum[0]);
+  else row += F::vector<3>(v.angularMomentum);
+  file_->row(row);
+}
+
+template class Conservation<2>;
+template class Conservation<3>;
+
+}  // namespace shizuku

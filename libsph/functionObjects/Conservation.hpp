@@ -1,0 +1,42 @@
+// Function object `conservation` (design.md 1.3): global balances of the fluid
+// particles (walls excluded), from the flow state at time t:
+//   volume         = sum_i m / <rho>_i            (eq. 18 density; m^2 per unit depth in 2D)
+//   nominalVolume  = N_fluid m / rho0            (constant unless particles are lost)
+//   kineticEnergy  = sum_i 0.5 m |u_i|^2
+//   momentum       = sum_i m u_i                  (vector)
+//   angularMomentum= sum_i m r_i x u_i about the origin (z component in 2D, vector in 3D)
+// File conservation.dat: time, volume, nominalVolume, kineticEnergy, momentum, angularMomentum.
+// Reads (controlDict functions/<name>): type conservation; writeControl; writeInterval.
+#pragma once
+#include "functionObjects/BlockReduce.hpp"
+#include "functionObjects/SampledFunctionObject.hpp"
+#include <optional>
+
+namespace shizuku {
+
+template <int D>
+struct ConservationValues {
+  using Angular = Eigen::Matrix<double, D == 2 ? 1 : 3, 1>;  // z only in 2D
+  double volume = 0, nominalVolume = 0, kineticEnergy = 0;
+  Vec<D> momentum = Vec<D>::Zero();
+  Angular angularMomentum = Angular::Zero();
+};
+
+template <int D>
+class Conservation : public SampledFunctionObject<D> {
+ public:
+  Conservation(const std::string& name, const Dictionary& dict);
+  static ConservationValues<D> compute(const FlowState<D>& s);
+
+ protected:
+  void open(const FlowState<D>& s, const RunInfo& info) override;
+  void sample(const FlowState<D>& s, const RunInfo& info) override;
+
+ private:
+  std::optional<PostProcessingFile> file_;
+};
+
+extern template class Conservation<2>;
+extern template class Conservation<3>;
+
+}  // namespace shizuku

@@ -1,0 +1,159 @@
+// Function object `densityError` (eq. 22): see DensityError.hpp.
+#include "functionObjects/DensityError.hpp"
+#include "functionObjects/BlockReduce.hpp"
+#include "io/TimeName.hpp"
+#include <cmath>
+#include <limits>
+#include <omp.h>
+
+namespace shizuku {
+
+namespace {
+struct Moments {
+  double nIn = 0, sumIn = 0, sum2In = 0, maxIn = 0;
+  double nAll = 0, sumAll = 0, sum2All = 0, maxAll = 0;
+  Moments& operator+=(const Moments& o) {
+    nIn += o.nIn; sumIn += o.sumIn; sum2In += o.sum2In; maxIn = std::max(maxIn, o.maxIn);
+    nAll += o.nAll; sumAll += o.sumAll; sum2All += o.sum2All; maxAll = std::max(maxAll, o.maxAll);
+    return *this;
+  }
+};
+
+DensityErrorStats finish(double n, double sum, double sum2, double maxAbs) {
+  DensityErrorStats st;
+  st.count = long(n);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  st.mean = n > 0 ? sum / n : nan;
+  st.rms = n > 0 ? std::sqrt(sum2 / n) : nan;
+  st.max = n > 0 ? maxAbs : nan;
+  return st;
+}
+}  // namespace
+
+template <int D>
+DensityError<D>::DensityError(const std::string& name, const Dictionary& dict)
+    : SampledFunctionObject<D>(name, "densityError", dict) {
+  if (const Dictionary* h = dict.subDictPtr("histogram")) {
+    min_ = h->getScalarOr("min", -10.0, dim::none);
+    max_ = h->getScalarOr("max", 10.0, dim::none);
+    bins_ = h->getIntOr("bins", 80);
+    const std::string w = h->getOptionOr("write", {"writeTime", "sample", "no"}, "writeTime");
+    write_ = w == "writeTime" ? HistogramWrite::writeTime
+             : w == "sample"  ? HistogramWrite::sample : HistogramWrite::no;
+    if (!(max_ > min_)) h->error("max", "must be greater than min");
+    if (bins_ < 1) h->error("bins", "must be >= 1");
+  } else {
+    dict.getWordOr("histogram", "{ min -10; max 10; bins 80; write writeTime; }");  // lists the default
+  }
+  result_.histInterior.assign(std::size_t(bins_), 0);
+  result_.histAll.assign(std::size_t(bins_), 0);
+}
+
+template <int D>
+std::string DensityError<D>::details() const {
+  return cat(", histogram ", bins_, " bins over [", min_, ", ", max_, "] %");
+}
+
+template <int D>
+const DensityErrorResult& DensityError<D>::evaluate(const FlowState<D>& s) {
+  const auto& p = s.particles;
+  const double rho0 = s.rho0;
+  const std::size_t n = p.size();
+  const auto error = [&](std::size_t i) { return (rho0 - p.density[i]) / rho0 * 100.0; };
+
+  // Moments: deterministic block sums.
+  thread_local std::vector<Moments> partial;
+  const Moments m = blockReduce(n, partial, [&](Moments& a, std::size_t i) {
+    if (!p.isFluid(i)) return;
+    const double e = error(i);
+    a.nAll += 1; a.sumAll += e; a.sum2All += e * e; a.maxAll = std::max(a.maxAll, std::abs(e));
+    if (p.surfaceClass(i) == SurfaceClass::interior) {
+      a.nIn += 1; a.sumIn += e; a.sum2In += e * e; a.maxIn = std::max(a.maxIn, std::abs(e));
+    }
+  });
+  result_.interior = finish(m.nIn, m.sumIn, m.sum2In, m.maxIn);
+  result_.all = finish(m.nAll, m.sumAll, m.sum2All, m.maxAll);
+
+  // Histograms: per-thread counts (slot 0 below, 1..bins, bins+1 above), then added up.
+  const int nb = bins_ + 2, threads = omp_get_max_threads();
+  threadCounts_.assign(std::size_t(threads) * 2 * nb, 0);
+  const double width = (max_ - min_) / bins_;
+#pragma omp parallel
+  {
+    long* c = threadCounts_.data() + std::size_t(omp_get_thread_num()) * 2 * nb;
+#pragma omp for schedule(static)
+    for (long i = 0; i < long(n); ++i) {
+      if (!p.isFluid(i)) continue;
+      const double e = error(i);
+      int k;
+      if (e < min_) k = 0;
+      else if (e > max_) k = bins_ + 1;
+      else k = 1 + std::min(bins_ - 1, int(std::floor((e - min_) / width)));
+      c[nb + k] += 1;
+      if (p.surfaceClass(i) == SurfaceClass::interior) c[k] += 1;
+    }
+  }
+  result_.belowInterior = result_.aboveInterior = result_.belowAll = result_.aboveAll = 0;
+  std::fill(result_.histInterior.begin(), result_.histInterior.end(), 0);
+  std::fill(result_.histAll.begin(), result_.histAll.end(), 0);
+  for (int t = 0; t < threads; ++t) {
+    const long* c = threadCounts_.data() + std::size_t(t) * 2 * nb;
+    result_.belowInterior += c[0];
+    result_.aboveInterior += c[bins_ + 1];
+    result_.belowAll += c[nb];
+    result_.aboveAll += c[nb + bins_ + 1];
+    for (int k = 0; k < bins_; ++k) {
+      result_.histInterior[k] += c[1 + k];
+      result_.histAll[k] += c[nb + 1 + k];
+    }
+  }
+  const auto mode = [&](const std::vector<long>& h) {
+    int best = -1;
+    for (int k = 0; k < bins_; ++k)
+      if (h[k] > 0 && (best < 0 || h[k] > h[best])) best = k;
+    return best < 0 ? std::numeric_limits<double>::quiet_NaN() : binCentre(best);
+  };
+  result_.interior.mode = mode(result_.histInterior);
+  result_.all.mode = mode(result_.histAll);
+  return result_;
+}
+
+template <int D>
+void DensityError<D>::open(const FlowState<D>& s, const RunInfo& info) {
+  file_.emplace(this->makeFile(info, "densityError.dat"));
+  file_->comment(cat("density error e_i = (rho0 - <rho>_i)/rho0 x 100 % (eq. 22), <rho>_i the summation density, rho0 = ",
+                     PostProcessingFile::number(s.rho0), " kg/m^3\n",
+                     "mean, rms, max |e|, mode (centre of the fullest histogram bin): interior particles;\n",
+                     "meanAll, rmsAll, maxAll, modeAll: all fluid particles (interior + vicinity + free + splash)"));
+  file_->columns({"time", "mean", "rms", "max", "mode", "meanAll", "rmsAll", "maxAll", "modeAll"},
+                 {"s", "%", "%", "%", "%", "%", "%", "%", "%"});
+}
+
+template <int D>
+void DensityError<D>::sample(const FlowState<D>& s, const RunInfo& info) {
+  const auto& r = evaluate(s);
+  file_->row(s.time, {r.interior.mean, r.interior.rms, r.interior.max, r.interior.mode, r.all.mean, r.all.rms,
+                      r.all.max, r.all.mode});
+  if (write_ == HistogramWrite::sample || (write_ == HistogramWrite::writeTime && info.isWriteTime))
+    writeHistogram(s, info);
+}
+
+template <int D>
+void DensityError<D>::writeHistogram(const FlowState<D>& s, const RunInfo& info) {
+  PostProcessingFile f = this->makeFile(info, timeName(s.time) + "/histogram.dat");
+  const auto& r = result_;
+  f.comment(cat("histogram of the density error (eq. 22) at time ", PostProcessingFile::number(s.time), " s\n",
+                "bins ", bins_, " of width ", PostProcessingFile::number((max_ - min_) / bins_), " % over [",
+                PostProcessingFile::number(min_), ", ", PostProcessingFile::number(max_), "] %\n",
+                "interior particles ", r.interior.count, " (below range ", r.belowInterior, ", above ",
+                r.aboveInterior, "); all fluid particles ", r.all.count, " (below range ", r.belowAll, ", above ",
+                r.aboveAll, ")"));
+  f.columns({"binCentre", "countInterior", "countAll"}, {"%", "-", "-"});
+  for (int k = 0; k < bins_; ++k)
+    f.row(cat(PostProcessingFile::number(binCentre(k)), " ", r.histInterior[k], " ", r.histAll[k]));
+}
+
+template class DensityError<2>;
+template class DensityError<3>;
+
+}  // namespace shizuku

@@ -1,0 +1,30 @@
+// Function object `fluidExtent` (design.md 1.3): the bounding box of the fluid
+// particle positions at time t (walls excluded; periodic positions as stored).
+// File extent.dat: time, min (x y[ z]), max (x y[ z]) in m. With no fluid
+// particle both are nan.
+// Reads (controlDict functions/<name>): type fluidExtent; writeControl; writeInterval.
+#pragma once
+#include "functionObjects/SampledFunctionObject.hpp"
+#include <optional>
+
+namespace shizuku {
+
+template <int D>
+class FluidExtent : public SampledFunctionObject<D> {
+ public:
+  FluidExtent(const std::string& name, const Dictionary& dict);
+  // Fluid bounding box (nan if there is no fluid particle).
+  static void compute(const FlowState<D>& s, Vec<D>& lo, Vec<D>& hi);
+
+ protected:
+  void open(const FlowState<D>& s, const RunInfo& info) override;
+  void sample(const FlowState<D>& s, const RunInfo& info) override;
+
+ private:
+  std::optional<PostProcessingFile> file_;
+};
+
+extern template class FluidExtent<2>;
+extern template class FluidExtent<3>;
+
+}  // namespace shizuku

@@ -1,0 +1,17 @@
+// Building one function object by type name (design.md 1.3), for the list
+// factory createFunctionObjects() and for shizukuPostProcess (which may name a
+// type with default settings instead of an entry of the controlDict).
+// Types: probes densityError conservation fluidExtent timing.
+// Reads (controlDict functions/<name>): type, then the keys of that type.
+#pragma once
+#include "functionObjects/FunctionObject.hpp"
+
+namespace shizuku {
+
+std::vector<std::string> functionObjectTypes();
+
+// Build the object `name` from its dictionary (which holds `type`). Throws InputError.
+template <int D>
+std::unique_ptr<FunctionObject<D>> createFunctionObject(const std::string& name, const Dictionary& dict);
+
+}  // namespace shizuku

@@ -1,0 +1,48 @@
+// The function-object factory (design.md 1.3): one object per entry of the
+// controlDict `functions { <name> { type <type>; ... } }`, built only when listed.
+// Reads (controlDict): functions { <name> { type probes|densityError|conservation|fluidExtent|timing; ... } }
+#include "functionObjects/Conservation.hpp"
+#include "functionObjects/DensityError.hpp"
+#include "functionObjects/FluidExtent.hpp"
+#include "functionObjects/FunctionObjectFactory.hpp"
+#include "functionObjects/Probes.hpp"
+#include "functionObjects/Timing.hpp"
+#include <set>
+
+namespace shizuku {
+
+std::vector<std::string> functionObjectTypes() {
+  return {"probes", "densityError", "conservation", "fluidExtent", "timing"};
+}
+
+template <int D>
+std::unique_ptr<FunctionObject<D>> createFunctionObject(const std::string& name, const Dictionary& dict) {
+  const std::string type = dict.getOption("type", functionObjectTypes());
+  if (type == "probes") return std::make_unique<Probes<D>>(name, dict);
+  if (type == "densityError") return std::make_unique<DensityError<D>>(name, dict);
+  if (type == "conservation") return std::make_unique<Conservation<D>>(name, dict);
+  if (type == "fluidExtent") return std::make_unique<FluidExtent<D>>(name, dict);
+  return std::make_unique<Timing<D>>(name, dict);
+}
+
+template <int D>
+std::vector<std::unique_ptr<FunctionObject<D>>> createFunctionObjects(const Dictionary* functions) {
+  std::vector<std::unique_ptr<FunctionObject<D>>> list;
+  if (!functions) return list;
+  for (const auto& name : functions->keys()) {
+    if (!functions->isDict(name))
+      functions->error(name, "a function object is a dictionary { type <type>; ... } (types: probes densityError "
+                             "conservation fluidExtent timing)");
+    if (name.find('/') != std::string::npos || name == "." || name == "..")
+      functions->error(name, "a function-object name names a folder: no '/', '.' or '..'");
+    list.push_back(createFunctionObject<D>(name, functions->subDict(name)));
+  }
+  return list;
+}
+
+template std::unique_ptr<FunctionObject<2>> createFunctionObject<2>(const std::string&, const Dictionary&);
+template std::unique_ptr<FunctionObject<3>> createFunctionObject<3>(const std::string&, const Dictionary&);
+template std::vector<std::unique_ptr<FunctionObject<2>>> createFunctionObjects<2>(const Dictionary*);
+template std::vector<std::unique_ptr<FunctionObject<3>>> createFunctionObjects<3>(const Dictionary*);
+
+}  // namespace shizuku
