@@ -285,6 +285,9 @@ sub { x 1; }
               "a length [m]");
   CHECK_ERROR(d.subDict("sub").getScalar("y", dim::none), "testDict:8:1: keyword 'y': missing in dictionary 'case/system/testDict/sub'");
   CHECK_ERROR(d.subDict("a"), "keyword 'a'", "expected a sub-dictionary");
+  // a missing keyword points at a present, unread keyword that looks like it misspelt
+  CHECK_ERROR(parse("\nspacng 1;").getScalar("spacing", dim::length), "keyword 'spacing': missing",
+              "'spacng' (line 2) looks like a misspelling of it");
   CHECK_ERROR(d.getWord("sub"), "keyword 'sub'", "expected a word");
   CHECK_ERROR(d.error("a", "custom problem"), "testDict:1:1: keyword 'a': custom problem");
   BOOST_TEST(d.getOption("w", {"word", "other"}) == "word");
