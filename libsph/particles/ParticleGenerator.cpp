@@ -394,6 +394,10 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict) {
   const double d0 = dict.getScalar("spacing", dim::length);
   if (!(d0 > 0)) dict.error("spacing", "must be positive, found " + fmt(d0));
   const double tol = kSlack * d0;
+  // `dimension` (optional) is how the solver picks 2D or 3D; it must agree.
+  if (dict.found("dimension") && dict.getInt("dimension") != D)
+    dict.error("dimension", "is " + std::to_string(dict.getInt("dimension")) + " but the particles are being built in " +
+                                std::to_string(D) + "D");
   out.periodic = readPeriodic<D>(dict, d0);
 
   // 1. Read every region, in file order.

@@ -4,6 +4,7 @@
 //
 // Keys read:
 //   spacing  d0 (a length, > 0)
+//   dimension 2 | 3 (optional; the solver chooses 2D or 3D from it; must equal D)
 //   regions { <name> { type fluid|wall; shape box|circle; ... } }   (in file order)
 //   periodic { min (..); max (..); directions (x y); }              (optional)
 //

@@ -416,6 +416,9 @@ BOOST_AUTO_TEST_CASE(input_errors) {
   CHECK_ERROR(2, "spacing 0.1; regions { f { type fluid; " + box + " }\n w { type wall; shape circle; centre (0 0); radius 1; } }",
               "keyword 'shape'", "'circle' is not one of: box");
   CHECK_ERROR(2, "spacing 0.1; regions { f 1; }", "keyword 'f'", "expected a sub-dictionary");
+  CHECK_ERROR(3, "dimension 2; spacing 0.1; regions { f { type fluid; shape box; min (0 0 0); max (1 1 1); } }",
+              "keyword 'dimension'", "is 2 but the particles are being built in 3D");
+  BOOST_TEST(generate<2>("dimension 2; spacing 0.5; regions { f { type fluid; " + box + " } }").set.size() == 4u);
   CHECK_ERROR(2, "spacing 0.1; regions { f { type fluid; shape box; min (0 0); max (0.05 1); } }",
               "keyword 'max'", "thinner than one spacing");
 }
