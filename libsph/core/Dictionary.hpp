@@ -100,6 +100,9 @@ class Dictionary {
   void checkAllRead() const;
   // Mark a keyword known without reading it (e.g. the FoamFile header).
   void markRead(const std::string& key) const;
+  // Mark every keyword, recursively, known (a dictionary deliberately ignored,
+  // e.g. `functions` under -noFunctionObjects).
+  void markAllRead() const;
 
   // "file: key default value" lines, each default once, in the order used.
   static std::vector<std::string>& defaultsUsed();

@@ -487,6 +487,14 @@ zzz 1;
   BOOST_CHECK_NO_THROW(d.checkAllRead());
 }
 
+BOOST_AUTO_TEST_CASE(mark_all_read_silences_a_whole_tree) {
+  const Dictionary d = parse("functions { a { type probes; typo 1; } b { x 1; } }\nother 1;\n");
+  d.subDict("functions").markAllRead();
+  CHECK_ERROR(d.checkAllRead(), "unknown keyword 'other'");
+  d.found("other");
+  BOOST_CHECK_NO_THROW(d.checkAllRead());
+}
+
 BOOST_AUTO_TEST_CASE(closest_match_rules) {
   const std::vector<std::string> c = {"maxCo", "maxDeltaT", "writeInterval"};
   BOOST_TEST(closestMatch("maxCO", c) == "maxCo");           // case-insensitive: distance 0
