@@ -44,8 +44,8 @@ Simulation<D>::Simulation(const std::string& caseDir, const SimulationOptions& o
   st_.output = timers_.stage("output");
   if (opt_.functionObjects && !opt_.postProcessing)
     functionObjects_ = createFunctionObjects<D>(files_.controlDict.subDictPtr("functions"));
-  else
-    files_.controlDict.markRead("functions");
+  else if (const Dictionary* f = files_.controlDict.subDictPtr("functions"))
+    f->markAllRead();
   files_.checkAllRead();
 }
 
@@ -304,6 +304,9 @@ void Simulation<D>::solvePressure() {
   StageTimers::Scope t(timers_, st_.ppeSolve);
   report_.ppe = ppe_->solve(s_);
   report_.ppeUnknowns = ppe_->numUnknowns();
+  if (report_.ppe.usedFallback && ++ppeFallbacks_ <= 10)
+    Log::get().warning(cat("step ", s_.step + 1, ": ", report_.ppe.message,
+                           ppeFallbacks_ == 10 ? " (further fallbacks are counted, not shown)" : ""));
   if (!report_.ppe.ok)
     throw NumericalError(cat("pressure Poisson equation failed at step ", s_.step + 1, ", time ", s_.time, ": ",
                              report_.ppe.message));

@@ -110,6 +110,7 @@ class Simulation {
   struct StageIds { int neighbours, density, freeSurface, surfaceFit, weights, predictor, ppeAssembly, ppeSolve,
                     corrector, advection, ads, shifting, functionObjects, output; } st_{};
   StepReport report_;
+  long ppeFallbacks_ = 0;
   std::string startTimeName_;
   std::vector<std::string> written_;
   // Scratch (sized once).

@@ -299,6 +299,7 @@ int Simulation<D>::run() {
     info(cat("  ", std::left, std::setw(16), timers_.names()[k], std::right, std::setw(10), std::fixed,
              std::setprecision(3), timers_.total()[k], " s  ", std::setw(5), std::setprecision(1),
              tsum > 0 ? 100 * timers_.total()[k] / tsum : 0.0, " %", std::defaultfloat));
+  if (ppeFallbacks_ > 0) info(cat("PPE: the iterative solver fell back to a direct LU in ", ppeFallbacks_, " steps"));
   info("Files written:");
   for (const auto& w : written_) info("  " + files_.dir + "/" + w + "/particles.vtp");
   if (!written_.empty()) info("  " + files_.dir + "/particles.pvd");

@@ -18,6 +18,7 @@ struct LinearSolveResult {
   int iterations = 0;
   double residual = 0;  // ||A x - b|| / ||b|| (0 when b = 0)
   std::string message;
+  bool usedFallback = false;  // an iterative solve failed and a direct LU solved instead
 };
 
 class LinearSolver {

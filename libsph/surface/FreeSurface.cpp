@@ -40,12 +40,12 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
       const double dw = s.kernel.dwdr(nl.r[k]);
       div -= V * dw * nl.r[k];                       // -V r_ij . (dw/dr r_ij / r)
-      gc += V * (dw / nl.r[k]) * nl.rij[k];          // sum V gradW_ij  (points outward here: rij = ri - rj, dw < 0)
+      gc += V * (dw / nl.r[k]) * nl.rij[k];          // sum V gradW_ij: points toward the neighbours
     }
     s.divR[i] = div;
-    s.gradC[i] = -gc;                                 // inward: toward the neighbours
+    s.gradC[i] = gc;                                  // inward (into the fluid)
     const double g = gc.norm();
-    if (g > 0) P.normal[i] = gc / g;                  // outward unit normal
+    if (g > 0) P.normal[i] = -gc / g;                 // outward unit normal
     SurfaceClass c = SurfaceClass::interior;
     if (par_.enabled) {
       if (div < par_.splashThreshold) c = SurfaceClass::splash;
