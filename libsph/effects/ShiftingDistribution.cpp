@@ -13,6 +13,14 @@ const char* gradientName(DistributionParameters::Gradient g) {
   }
   return "?";
 }
+
+// x^p, by repeated multiplication when p is a small whole number (np = 4 by default).
+inline double power(double x, double p, int whole) {
+  if (whole < 0) return std::pow(x, p);
+  double r = 1;
+  for (int k = 0; k < whole; ++k) r *= x;
+  return r;
+}
 }  // namespace
 
 template <int D>
@@ -35,6 +43,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
   const double coeff = ops ? -par_.C * h * h * V : par_.C * h * V;
   const double rStar = 1.1 * std::sqrt(double(D)) * s.d0;
   const bool haveWeights = !s.weights.gradW.empty() && !s.weights.order.empty();
+  const int wholeNp = (par_.np == std::floor(par_.np) && par_.np >= 0 && par_.np <= 16) ? int(par_.np) : -1;
   const long n = long(s.size());
   long count = 0;
 #pragma omp parallel for schedule(static) reduction(+ : count)
@@ -53,7 +62,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
       if (ops) {
         double wv, dw;
         s.kernel.eval(r, wv, dw);
-        const double clump = par_.Rp * std::pow(wv * invW0, par_.np);
+        const double clump = par_.Rp * power(wv * invW0, par_.np, wholeNp);
         const Vec<D> gradW = (dw / r) * nl.rij[k];
         switch (grad) {
           case G::kernel: sum += (1.0 + clump) * gradW; break;
