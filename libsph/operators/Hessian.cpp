@@ -5,6 +5,7 @@
 // Reads no dictionary keys.
 #include "operators/DerivativeOperator.hpp"
 #include "operators/WeightRows.hpp"
+#include <Eigen/LU>
 
 namespace shizuku {
 
@@ -12,23 +13,22 @@ template <int D>
 Mat<D> Ops<D>::hessian(const Kernel<D>& kernel, double V, const NeighbourList<D>& nl,
                        const std::vector<double>& f, std::size_t i) {
   using T = weights::Taylor<D>;
+  constexpr int NB = T::NB;
   const double h = kernel.h(), invH = 1.0 / h;
-  typename T::MatB S = T::MatB::Zero();
-  typename T::VecB rhs = T::VecB::Zero(), P, phi;
+  Eigen::Matrix<double, NB, NB> S = Eigen::Matrix<double, NB, NB>::Zero();
+  Eigen::Matrix<double, NB, 1> rhs = Eigen::Matrix<double, NB, 1>::Zero(), P, phi;
   for (Index p = nl.offset[i]; p < nl.offset[i + 1]; ++p) {
     const double r = nl.r[p];
     double w, dw;
     kernel.eval(r, w, dw);
-    const double kappa = -dw / r * h * h;
-    const Vec<D> s = -invH * nl.rij[p];
-    const double rho = r * invH;
-    T::fill(s, 1.0 / (rho * rho), P, phi);
-    S.noalias() += (kappa * phi) * P.transpose();
-    rhs += (f[nl.j[p]] - f[i]) * kappa * phi;
+    const double kappa = -dw / r * h * h, beta = kappa * h * h / (r * r);
+    T::fill(Vec<D>(-invH * nl.rij[p]), kappa, beta, P.data(), phi.data());
+    S.noalias() += phi * P.transpose();
+    rhs += (f[nl.j[p]] - f[i]) * phi;
   }
   // M = V S and the right-hand side carries V too: V cancels.
   (void)V;
-  const typename T::VecB X = Eigen::PartialPivLU<typename T::MatB>(S).solve(rhs);
+  const Eigen::Matrix<double, NB, 1> X = Eigen::FullPivLU<Eigen::Matrix<double, NB, NB>>(S).solve(rhs);
   Mat<D> H;
   const double invH2 = invH * invH;
   for (int a = 0; a < D; ++a) H(a, a) = X[D + a] * invH2;

@@ -6,7 +6,7 @@
 // = c r_ji with c = -w'(r)/r >= 0.
 // FI (3.2), scaled by h: s = r_ji / h, rho = r / h,
 //   P(s)   = (s_a ; s_a^2/2 ; s_a s_b)            Taylor basis, X = (h f_a ; h^2 f_aa ; h^2 f_ab)
-//   Phi    = kappa (s_a ; s_a^2/rho^2 ; s_a s_b/rho^2), kappa = c h^2
+//   Phi    = (kappa s_a ; beta s_a^2 ; beta s_a s_b), kappa = c h^2, beta = kappa / rho^2
 //          = (h gradW ; h^2 T) with T = |w'| r_ji (x) r_ji / r^3 (Voigt order diag, off-diag)
 //   S_i    = sum_j Phi P^T, M_i = V S_i,  tilde gradW = (first D rows of S^-1) Phi / (h V),
 //   tilde lapW = (sum of the diagonal second-derivative rows of S^-1) . Phi / (h^2 V).
@@ -19,7 +19,6 @@
 // Reads no dictionary keys.
 #pragma once
 #include "operators/DerivativeOperator.hpp"
-#include <Eigen/LU>
 #include <cmath>
 
 namespace shizuku {
@@ -42,77 +41,256 @@ template <int D> struct Taylor {
   static constexpr int numOff = NB - 2 * D;
   static constexpr int offA[3] = {0, 1, 0};
   static constexpr int offB[3] = {1, 2, 2};
-  using VecB = Eigen::Matrix<double, NB, 1>;
-  using MatB = Eigen::Matrix<double, NB, NB>;
-  // P(s) and phi(s) = Phi / kappa.
-  static void fill(const Vec<D>& s, double invRho2, VecB& P, VecB& phi) {
+  // P(s) and the test-function vector Phi for given kappa and beta.
+  static void fill(const Vec<D>& s, double kappa, double beta, double* P, double* phi) {
     for (int a = 0; a < D; ++a) {
       P[a] = s[a];
-      phi[a] = s[a];
+      phi[a] = kappa * s[a];
       const double q = s[a] * s[a];
       P[D + a] = 0.5 * q;
-      phi[D + a] = q * invRho2;
+      phi[D + a] = beta * q;
     }
     for (int k = 0; k < numOff; ++k) {
       const double q = s[offA[k]] * s[offB[k]];
       P[2 * D + k] = q;
-      phi[2 * D + k] = q * invRho2;
+      phi[2 * D + k] = beta * q;
     }
   }
 };
 
-// 1-norm reciprocal condition number from a matrix and its inverse; 0 or NaN
-// when the inverse is not finite (a failed test `rcond > tol` either way).
-template <class M>
-inline double rcond1(const M& a, const M& inv) {
-  const double na = a.cwiseAbs().colwise().sum().maxCoeff();
-  const double ni = inv.cwiseAbs().colwise().sum().maxCoeff();
+// Moments of the FI matrix. Every entry of S = sum_j Phi P^T is a kernel-
+// weighted moment of s: S[a][b] = sum kappa s_a s_b, S[a][2nd l] = c_l sum kappa s_a q_l,
+// S[2nd k][b] = sum beta q_k s_b, S[2nd k][2nd l] = c_l sum beta q_k q_l, with q the
+// quadratic monomials in Taylor order and c_l = 1/2 (diagonal) or 1 (mixed). So
+// per pair only the distinct monomials of degree 2..4 are accumulated: 16 (2D) /
+// 41 (3D) multiply-adds instead of 25 / 81. Tables built at compile time.
+template <int D> struct Monomials {
+  static constexpr int n2 = D * (D + 1) / 2, n3 = D == 2 ? 4 : 10, n4 = D == 2 ? 5 : 15;
+  int e2[n2][3] = {}, e3[n3][3] = {}, e4[n4][3] = {};  // exponents
+  int par3[n3] = {}, var3[n3] = {}, par4[n4] = {}, var4[n4] = {};  // m3 = m2[par3] s[var3], ...
+  int sq[D][D] = {};       // s_a s_b -> degree-2 index
+  int mul13[D][n2] = {};   // s_a q_m -> degree-3 index
+  int mul22[n2][n2] = {};  // q_k q_m -> degree-4 index
+
+  static constexpr bool same(const int* a, const int* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+  template <int N> static constexpr int find(const int (&list)[N][3], const int* e) {
+    for (int m = 0; m < N; ++m)
+      if (same(list[m], e)) return m;
+    return -1;
+  }
+  template <int N> static constexpr void enumerate(int (&list)[N][3], int degree) {
+    int m = 0;
+    for (int a = degree; a >= 0; --a)
+      for (int b = degree - a; b >= 0; --b) {
+        const int c = degree - a - b;
+        if (D == 2 && c != 0) continue;
+        list[m][0] = a;
+        list[m][1] = b;
+        list[m][2] = c;
+        ++m;
+      }
+  }
+  constexpr Monomials() {
+    for (int a = 0; a < D; ++a) e2[a][a] = 2;
+    for (int k = 0; k < n2 - D; ++k) {
+      e2[D + k][Taylor<D>::offA[k]] += 1;
+      e2[D + k][Taylor<D>::offB[k]] += 1;
+    }
+    enumerate(e3, 3);
+    enumerate(e4, 4);
+    for (int m = 0; m < n3; ++m) {
+      int a = 0;
+      while (e3[m][a] == 0) ++a;
+      int e[3] = {e3[m][0], e3[m][1], e3[m][2]};
+      e[a] -= 1;
+      par3[m] = find(e2, e);
+      var3[m] = a;
+    }
+    for (int m = 0; m < n4; ++m) {
+      int a = 0;
+      while (e4[m][a] == 0) ++a;
+      int e[3] = {e4[m][0], e4[m][1], e4[m][2]};
+      e[a] -= 1;
+      par4[m] = find(e3, e);
+      var4[m] = a;
+    }
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) {
+        int e[3] = {0, 0, 0};
+        e[a] += 1;
+        e[b] += 1;
+        sq[a][b] = find(e2, e);
+      }
+    for (int a = 0; a < D; ++a)
+      for (int m = 0; m < n2; ++m) {
+        int e[3] = {e2[m][0], e2[m][1], e2[m][2]};
+        e[a] += 1;
+        mul13[a][m] = find(e3, e);
+      }
+    for (int k = 0; k < n2; ++k)
+      for (int m = 0; m < n2; ++m) {
+        int e[3] = {e2[k][0] + e2[m][0], e2[k][1] + e2[m][1], e2[k][2] + e2[m][2]};
+        mul22[k][m] = find(e4, e);
+      }
+  }
+};
+
+// Inverse of a small fixed-size matrix by Gauss-Jordan elimination with
+// partial pivoting (for N = 2..9 several times faster than Eigen's blocked
+// PartialPivLU::inverse). Returns false on a zero or non-finite pivot.
+template <int N>
+inline bool invertSmall(const double (&m)[N][N], double (&b)[N][N]) {
+  double a[N][N];
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) {
+      a[i][j] = m[i][j];
+      b[i][j] = i == j ? 1.0 : 0.0;
+    }
+  for (int k = 0; k < N; ++k) {
+    int piv = k;
+    double best = std::abs(a[k][k]);
+    for (int i = k + 1; i < N; ++i)
+      if (std::abs(a[i][k]) > best) {
+        best = std::abs(a[i][k]);
+        piv = i;
+      }
+    if (!(best > 0) || !std::isfinite(best)) return false;
+    if (piv != k)
+      for (int j = 0; j < N; ++j) {
+        std::swap(a[k][j], a[piv][j]);
+        std::swap(b[k][j], b[piv][j]);
+      }
+    const double d = 1.0 / a[k][k];
+    for (int j = 0; j < N; ++j) {
+      a[k][j] *= d;
+      b[k][j] *= d;
+    }
+    for (int i = 0; i < N; ++i) {
+      if (i == k) continue;
+      const double f = a[i][k];
+      for (int j = 0; j < N; ++j) {
+        a[i][j] -= f * a[k][j];
+        b[i][j] -= f * b[k][j];
+      }
+    }
+  }
+  return true;
+}
+
+// 1-norm reciprocal condition number from a matrix and its inverse.
+template <int N>
+inline double rcond1(const double (&m)[N][N], const double (&inv)[N][N]) {
+  double na = 0, ni = 0;
+  for (int j = 0; j < N; ++j) {
+    double ca = 0, ci = 0;
+    for (int i = 0; i < N; ++i) {
+      ca += std::abs(m[i][j]);
+      ci += std::abs(inv[i][j]);
+    }
+    na = std::max(na, ca);
+    ni = std::max(ni, ci);
+  }
   return 1.0 / (na * ni);
 }
 
-// w and the plain gradient for every pair of row i; stores kappa = c h^2 in lapW
-// (scratch for the FI pass). Returns nothing: rows are [b, e).
+// Eigen D x D front end: inverse and its 1-norm rcond (0 if singular).
+template <int D>
+inline double invertWithRcond(const Mat<D>& m, Mat<D>& inv) {
+  double a[D][D], b[D][D];
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j < D; ++j) a[i][j] = m(i, j);
+  if (!invertSmall<D>(a, b)) return 0.0;
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j < D; ++j) inv(i, j) = b[i][j];
+  return rcond1<D>(a, b);
+}
+
+// Kernel pass of row [b, e): w into out.w, kappa = c h^2 into out.lapW and
+// beta = kappa h^2 / r^2 into out.gradW[p][0] (scratch, overwritten by the row
+// functions below, one of which must follow).
 template <int D>
 inline void kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, Index b, Index e, PairWeights<D>& out) {
   const double h2 = k.h() * k.h();
   for (Index p = b; p < e; ++p) {
-    const double r = nl.r[p];
+    const double r = nl.r[p], invR = 1.0 / r;
     double w, dw;
     k.eval(r, w, dw);
-    const double c = -dw / r;
+    const double kappa = -dw * invR * h2;
     out.w[p] = w;
-    out.gradW[p] = -c * nl.rij[p];
-    out.lapW[p] = c * h2;
+    out.lapW[p] = kappa;
+    out.gradW[p][0] = kappa * h2 * invR * invR;
   }
 }
 
-// FI row (after kernelRow). Returns false (weights untouched) if the stencil
-// fails the FI criteria.
+// FI row (after kernelRow). Returns false (kernelRow scratch untouched) if the
+// stencil fails the FI criteria.
 template <int D>
 inline bool fiRow(double h, double V, const NeighbourList<D>& nl, Index b, Index e, PairWeights<D>& out) {
   using T = Taylor<D>;
+  constexpr int NB = T::NB;
   if (e - b < Thresholds<D>::minNeighboursFI) return false;
   const double invH = 1.0 / h;
-  typename T::MatB S = T::MatB::Zero();
-  typename T::VecB P, phi;
+  using Mo = Monomials<D>;
+  static constexpr Mo mo{};
+  constexpr int n2 = Mo::n2, n3 = Mo::n3, n4 = Mo::n4;
+  double K2[n2] = {}, K3[n3] = {}, B3[n3] = {}, B4[n4] = {};
   for (Index p = b; p < e; ++p) {
     const Vec<D> s = -invH * nl.rij[p];
-    const double rho = nl.r[p] * invH;
-    T::fill(s, 1.0 / (rho * rho), P, phi);
-    S.noalias() += (out.lapW[p] * phi) * P.transpose();
+    const double kappa = out.lapW[p], beta = out.gradW[p][0];
+    double m2[n2], m3[n3], m4[n4];
+    for (int a = 0; a < D; ++a) m2[a] = s[a] * s[a];
+    for (int k = 0; k < T::numOff; ++k) m2[D + k] = s[T::offA[k]] * s[T::offB[k]];
+    for (int m = 0; m < n3; ++m) m3[m] = m2[mo.par3[m]] * s[mo.var3[m]];
+    for (int m = 0; m < n4; ++m) m4[m] = m3[mo.par4[m]] * s[mo.var4[m]];
+    for (int m = 0; m < n2; ++m) K2[m] += kappa * m2[m];
+    for (int m = 0; m < n3; ++m) {
+      K3[m] += kappa * m3[m];
+      B3[m] += beta * m3[m];
+    }
+    for (int m = 0; m < n4; ++m) B4[m] += beta * m4[m];
   }
-  const typename T::MatB Sinv = Eigen::PartialPivLU<typename T::MatB>(S).inverse();
-  if (!(rcond1(S, Sinv) > Thresholds<D>::minRcondFI)) return false;
+  double S[NB][NB];
+  for (int a = 0; a < D; ++a) {
+    for (int b = 0; b < D; ++b) {
+      S[a][b] = K2[mo.sq[a][b]];
+    }
+    for (int m = 0; m < n2; ++m) {
+      const double c = m < D ? 0.5 : 1.0;  // P = s_a^2 / 2 on the diagonal
+      S[a][D + m] = c * K3[mo.mul13[a][m]];
+      S[D + m][a] = B3[mo.mul13[a][m]];
+    }
+  }
+  for (int k = 0; k < n2; ++k)
+    for (int m = 0; m < n2; ++m) S[D + k][D + m] = (m < D ? 0.5 : 1.0) * B4[mo.mul22[k][m]];
+  double Sinv[NB][NB];
+  if (!invertSmall<NB>(S, Sinv) || !(rcond1<NB>(S, Sinv) > Thresholds<D>::minRcondFI)) return false;
+  // tilde gradW = G Phi, tilde lapW = ell . Phi with Phi = (kappa s ; beta q)
   const double gScale = invH / V, lScale = invH * invH / V;
-  Eigen::Matrix<double, D, T::NB> G = gScale * Sinv.template topRows<D>();
-  typename T::VecB ell = lScale * Sinv.template middleRows<D>(D).colwise().sum().transpose();
+  double G[D][NB], ell[NB];
+  for (int l = 0; l < NB; ++l) {
+    for (int a = 0; a < D; ++a) G[a][l] = gScale * Sinv[a][l];
+    double sum = 0;
+    for (int a = 0; a < D; ++a) sum += Sinv[D + a][l];
+    ell[l] = lScale * sum;
+  }
   for (Index p = b; p < e; ++p) {
     const Vec<D> s = -invH * nl.rij[p];
-    const double rho = nl.r[p] * invH;
-    T::fill(s, 1.0 / (rho * rho), P, phi);
-    const double kappa = out.lapW[p];
-    out.gradW[p] = kappa * (G * phi);
-    out.lapW[p] = kappa * ell.dot(phi);
+    const double kappa = out.lapW[p], beta = out.gradW[p][0];
+    double q[n2];
+    for (int a = 0; a < D; ++a) q[a] = s[a] * s[a];
+    for (int k = 0; k < T::numOff; ++k) q[D + k] = s[T::offA[k]] * s[T::offB[k]];
+    Vec<D> g;
+    double ls = 0, lq = 0;
+    for (int a = 0; a < D; ++a) {
+      double gs = 0, gq = 0;
+      for (int c = 0; c < D; ++c) gs += G[a][c] * s[c];
+      for (int m = 0; m < n2; ++m) gq += G[a][D + m] * q[m];
+      g[a] = kappa * gs + beta * gq;
+      ls += ell[a] * s[a];
+    }
+    for (int m = 0; m < n2; ++m) lq += ell[D + m] * q[m];
+    out.gradW[p] = g;
+    out.lapW[p] = kappa * ls + beta * lq;
   }
   return true;
 }
@@ -121,7 +299,11 @@ inline bool fiRow(double h, double V, const NeighbourList<D>& nl, Index b, Index
 template <int D>
 inline void standardRow(double h, const NeighbourList<D>& nl, Index b, Index e, PairWeights<D>& out) {
   const double invH2 = 1.0 / (h * h);
-  for (Index p = b; p < e; ++p) out.lapW[p] = 2.0 * out.lapW[p] * invH2;  // kappa = c h^2
+  for (Index p = b; p < e; ++p) {
+    const double c = out.lapW[p] * invH2;  // kappa = c h^2
+    out.gradW[p] = -c * nl.rij[p];         // c r_ji
+    out.lapW[p] = 2.0 * c;
+  }
 }
 
 // First-order row (after kernelRow): KGC gradient and renormalised Laplacian.
@@ -135,17 +317,19 @@ inline bool firstOrderRow(double h, double V, const NeighbourList<D>& nl, Index 
   Vec<D> o = Vec<D>::Zero();
   for (Index p = b; p < e; ++p) {
     const Vec<D> s = -invH * nl.rij[p];  // r_ji / h
-    A.noalias() += out.gradW[p] * s.transpose();
+    A.noalias() += out.lapW[p] * s * s.transpose();  // kappa s s^T = h gradW (x) s
     B.noalias() += out.w[p] * s * s.transpose();
     o += out.w[p] * s;
   }
-  A *= V * h;  // = V sum gradW (x) r_ji
-  const Mat<D> L = A.inverse();
-  if (!(rcond1(A, L) > Thresholds<D>::minRcondFirstOrder)) return false;
+  A *= V;  // = V sum gradW (x) r_ji
+  Mat<D> L;
+  if (!(invertWithRcond<D>(A, L) > Thresholds<D>::minRcondFirstOrder)) return false;
   // renormalised Laplacian (scaled units: s = r_ji/h)
-  const Vec<D> Bo = B.inverse() * o;
+  Mat<D> Binv;
+  bool ok = invertWithRcond<D>(B, Binv) > 0;
+  const Vec<D> Bo = ok ? Vec<D>(Binv * o) : Vec<D>::Zero();
   double den = 0;
-  bool ok = Bo.allFinite();
+  ok = ok && Bo.allFinite();
   if (ok) {
     for (Index p = b; p < e; ++p) {
       const Vec<D> s = -invH * nl.rij[p];
@@ -156,13 +340,10 @@ inline bool firstOrderRow(double h, double V, const NeighbourList<D>& nl, Index 
   const double lScale = ok ? 2.0 * D / (V * den * h * h) : 0.0;
   const double invH2 = invH * invH;
   for (Index p = b; p < e; ++p) {
-    if (ok) {
-      const Vec<D> s = -invH * nl.rij[p];
-      out.lapW[p] = lScale * out.w[p] * (1.0 - s.dot(Bo));
-    } else {
-      out.lapW[p] = 2.0 * out.lapW[p] * invH2;  // Morris/Brookshaw
-    }
-    out.gradW[p] = L * out.gradW[p];
+    const Vec<D> s = -invH * nl.rij[p];
+    const double kappa = out.lapW[p];
+    out.gradW[p] = (kappa * invH) * (L * s);  // L gradW, gradW = c r_ji = kappa s / h
+    out.lapW[p] = ok ? lScale * out.w[p] * (1.0 - s.dot(Bo)) : 2.0 * kappa * invH2;  // else Morris
   }
   return true;
 }

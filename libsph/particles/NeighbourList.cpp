@@ -4,8 +4,10 @@
 // build(): (1) a uniform grid over the bounding box (periodic directions: over
 // the periodic box, cell size L/floor(L/radius)), cell size >= radius;
 // (2) counting sort of particles by cell (wrapped positions copied in cell
-// order for locality); (3) parallel count pass over cells, prefix sum;
-// (4) parallel fill pass writing each row, sorted by j. Every buffer lives in
+// order for locality); (3) parallel scan over cells: each thread appends the
+// (cell-order) indices of the neighbours found to its own buffer and records
+// the row length; (4) prefix sum -> CSR offsets; (5) parallel copy pass per
+// particle writing j, r_ij, |r_ij|, rows sorted by j. Every buffer lives in
 // Impl and the output vectors only grow, so a rebuild allocates nothing once
 // the capacity has been reached. Rows are identical for any thread count.
 // Reads no dictionary keys (radius and box come from the caller).
@@ -56,18 +58,18 @@ struct NeighbourSearch<D>::Impl {
   std::vector<Index> sorted;     // particle indices in cell order (stable)
   std::vector<Vec<D>> xs;        // wrapped positions in cell order
   std::vector<Index> cursor;     // per-cell fill cursor of the counting sort
-  // per-thread scratch for rows that are not already sorted by j
-  struct Entry {
-    Index j;
-    Vec<D> rij;
-    double r;
-  };
-  std::vector<std::vector<Entry>> scratch;
+  std::vector<Index> rank;       // position of particle i in cell order
+  // scan results: per-thread lists of neighbour positions (cell order), and
+  // where the row of particle i starts in which thread's list
+  std::vector<std::vector<Index>> found;
+  std::vector<Index> rowStart;
+  std::vector<std::uint8_t> rowThread;
 
   void setupGrid(const std::vector<Vec<D>>& x, double radius, const PeriodicBox<D>& box);
   void sortByCell(const std::vector<Vec<D>>& x, const PeriodicBox<D>& box);
-  // Distinct neighbour cells of cell c (including c), returned in `cells`.
-  int neighbourCells(std::int64_t c, const PeriodicBox<D>& box, std::int64_t* cells) const;
+  // The particles of the distinct neighbour cells of cell c (including c), as
+  // ranges [b, e) of cell-order positions; consecutive cells are merged.
+  int neighbourRanges(std::int64_t c, const PeriodicBox<D>& box, Index* ranges) const;
 };
 
 template <int D>
@@ -161,7 +163,11 @@ void NeighbourSearch<D>::Impl::sortByCell(const std::vector<Vec<D>>& x, const Pe
   if (cursor.size() < std::size_t(numCells)) cursor.resize(numCells);
   Index* fill = cursor.data();
   std::copy(cellStart.begin(), cellStart.end() - 1, fill);
-  for (Index i = 0; i < n; ++i) sorted[fill[cellOf[i]]++] = i;
+  rank.resize(n);
+  for (Index i = 0; i < n; ++i) {
+    rank[i] = fill[cellOf[i]]++;
+    sorted[rank[i]] = i;
+  }
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     Vec<D> p = x[sorted[k]];
@@ -171,13 +177,11 @@ void NeighbourSearch<D>::Impl::sortByCell(const std::vector<Vec<D>>& x, const Pe
 }
 
 template <int D>
-int NeighbourSearch<D>::Impl::neighbourCells(std::int64_t c, const PeriodicBox<D>& box,
-                                             std::int64_t* cells) const {
+int NeighbourSearch<D>::Impl::neighbourRanges(std::int64_t c, const PeriodicBox<D>& box, Index* ranges) const {
   // per direction: the distinct neighbour cell coordinates
   int list[D][3] = {}, len[D] = {};
   for (int a = 0; a < D; ++a) {
     const int k = int((c / stride[a]) % nc[a]);
-    len[a] = 0;
     for (int o = -1; o <= 1; ++o) {
       int m = k + o;
       if (box.periodic[a]) {
@@ -192,14 +196,24 @@ int NeighbourSearch<D>::Impl::neighbourCells(std::int64_t c, const PeriodicBox<D
     }
   }
   int num = 0;
+  auto add = [&](std::int64_t cell) {
+    const Index b = cellStart[cell], e = cellStart[cell + 1];
+    if (b == e) return;
+    if (num > 0 && ranges[2 * num - 1] == b) {
+      ranges[2 * num - 1] = e;  // contiguous with the previous range
+    } else {
+      ranges[2 * num] = b;
+      ranges[2 * num + 1] = e;
+      ++num;
+    }
+  };
   if constexpr (D == 2) {
     for (int b = 0; b < len[1]; ++b)
-      for (int a = 0; a < len[0]; ++a) cells[num++] = list[0][a] + list[1][b] * stride[1];
+      for (int a = 0; a < len[0]; ++a) add(list[0][a] + list[1][b] * stride[1]);
   } else {
     for (int g = 0; g < len[2]; ++g)
       for (int b = 0; b < len[1]; ++b)
-        for (int a = 0; a < len[0]; ++a)
-          cells[num++] = list[0][a] + list[1][b] * stride[1] + list[2][g] * stride[2];
+        for (int a = 0; a < len[0]; ++a) add(list[0][a] + list[1][b] * stride[1] + list[2][g] * stride[2]);
   }
   return num;
 }
@@ -231,14 +245,10 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
   const std::int64_t numCells = m.numCells;
   const Index* cellStart = m.cellStart.data();
   const Index* sorted = m.sorted.data();
+  const Index* rank = m.rank.data();
   const Vec<D>* xs = m.xs.data();
   const Vec<D> period = m.period, half = m.halfPeriod;
-  std::array<bool, D> per = box_.periodic;
-
-  out.offset.resize(std::size_t(n) + 1);
-  Index* offset = out.offset.data();
-  offset[0] = 0;
-
+  const std::array<bool, D> per = box_.periodic;
   auto minImage = [&](Vec<D>& d) {
     for (int a = 0; a < D; ++a) {
       if (!per[a]) continue;
@@ -247,27 +257,46 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
     }
   };
 
-  // --- count pass: row lengths into offset[i+1]
-#pragma omp parallel
+  out.offset.resize(std::size_t(n) + 1);
+  Index* offset = out.offset.data();
+  offset[0] = 0;
+  m.rowStart.resize(n);
+  m.rowThread.resize(n);
+  const int nt = std::min(omp_get_max_threads(), 255);
+  if (int(m.found.size()) < nt) m.found.resize(nt);
+
+  // --- scan: neighbour positions per thread, row lengths into offset[i+1]
+#pragma omp parallel num_threads(nt)
   {
-    std::int64_t cells[27];
+    const int t = omp_get_thread_num();
+    std::vector<Index>& found = m.found[t];  // size = capacity; `used` entries valid
+    std::size_t used = 0;
+    Index ranges[2 * 27];
 #pragma omp for schedule(dynamic, 64)
     for (std::int64_t c = 0; c < numCells; ++c) {
       const Index b = cellStart[c], e = cellStart[c + 1];
       if (b == e) continue;
-      const int nn = m.neighbourCells(c, box_, cells);
+      const int nr = m.neighbourRanges(c, box_, ranges);
+      std::size_t candidates = 0;
+      for (int q = 0; q < nr; ++q) candidates += std::size_t(ranges[2 * q + 1] - ranges[2 * q]);
       for (Index k = b; k < e; ++k) {
+        if (found.size() < used + candidates) found.resize(std::max(2 * found.size(), used + candidates));
+        Index* dst = found.data() + used;
         const Vec<D> xi = xs[k];
-        Index cnt = 0;
-        for (int q = 0; q < nn; ++q) {
-          const Index qb = cellStart[cells[q]], qe = cellStart[cells[q] + 1];
-          for (Index l = qb; l < qe; ++l) {
+        std::size_t cnt = 0;
+        for (int q = 0; q < nr; ++q) {
+          for (Index l = ranges[2 * q]; l < ranges[2 * q + 1]; ++l) {
             Vec<D> d = xi - xs[l];
             if (periodic) minImage(d);
+            dst[cnt] = l;  // branch-free append
             cnt += (d.squaredNorm() < r2max) & (l != k);
           }
         }
-        offset[sorted[k] + 1] = cnt;
+        const Index i = sorted[k];
+        offset[i + 1] = Index(cnt);
+        m.rowStart[i] = Index(used);
+        m.rowThread[i] = std::uint8_t(t);
+        used += cnt;
       }
     }
   }
@@ -280,55 +309,29 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
   Vec<D>* orij = out.rij.data();
   double* orr = out.r.data();
 
-  // --- fill pass: rows written in candidate order, then sorted by j if needed
-  const int nt = omp_get_max_threads();
-  if (int(m.scratch.size()) < nt) m.scratch.resize(nt);
-#pragma omp parallel
-  {
-    std::int64_t cells[27];
-    auto& scratch = m.scratch[omp_get_thread_num()];
-#pragma omp for schedule(dynamic, 64)
-    for (std::int64_t c = 0; c < numCells; ++c) {
-      const Index b = cellStart[c], e = cellStart[c + 1];
-      if (b == e) continue;
-      const int nn = m.neighbourCells(c, box_, cells);
-      for (Index k = b; k < e; ++k) {
-        const Vec<D> xi = xs[k];
-        const Index i = sorted[k];
-        const Index p0 = offset[i];
-        Index p = p0;
-        bool isSorted = true;
-        Index last = -1;
-        for (int q = 0; q < nn; ++q) {
-          const Index qb = cellStart[cells[q]], qe = cellStart[cells[q] + 1];
-          for (Index l = qb; l < qe; ++l) {
-            Vec<D> d = xi - xs[l];
-            if (periodic) minImage(d);
-            const double r2 = d.squaredNorm();
-            if (r2 < r2max && l != k) {
-              const Index j = sorted[l];
-              isSorted &= (j > last);
-              last = j;
-              oj[p] = j;
-              orij[p] = d;
-              orr[p] = std::sqrt(r2);
-              ++p;
-            }
-          }
-        }
-        if (!isSorted) {
-          const Index len = p - p0;
-          if (Index(scratch.size()) < len) scratch.resize(len);
-          for (Index t = 0; t < len; ++t) scratch[t] = {oj[p0 + t], orij[p0 + t], orr[p0 + t]};
-          std::sort(scratch.begin(), scratch.begin() + len,
-                    [](const typename Impl::Entry& u, const typename Impl::Entry& v) { return u.j < v.j; });
-          for (Index t = 0; t < len; ++t) {
-            oj[p0 + t] = scratch[t].j;
-            orij[p0 + t] = scratch[t].rij;
-            orr[p0 + t] = scratch[t].r;
-          }
-        }
+  // --- copy: rows in particle order, sorted by j
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Index* src = m.found[m.rowThread[i]].data() + m.rowStart[i];
+    const Index len = offset[i + 1] - offset[i];
+    const Vec<D> xi = xs[rank[i]];
+    const Index p0 = offset[i];
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      bool isSorted = true;
+      Index last = -1;
+      for (Index t = 0; t < len; ++t) {
+        const Index l = src[t], j = sorted[l];
+        Vec<D> d = xi - xs[l];
+        if (periodic) minImage(d);
+        isSorted &= (j > last);
+        last = j;
+        oj[p0 + t] = j;
+        orij[p0 + t] = d;
+        orr[p0 + t] = std::sqrt(d.squaredNorm());
       }
+      if (isSorted) break;
+      // rare (particles not in cell order, or a periodic wrap): sort and redo
+      std::sort(src, src + len, [&](Index u, Index v) { return sorted[u] < sorted[v]; });
     }
   }
 }
