@@ -19,6 +19,7 @@ Mat<D> Ops<D>::hessian(const Kernel<D>& kernel, double V, const NeighbourList<D>
   Eigen::Matrix<double, NB, 1> rhs = Eigen::Matrix<double, NB, 1>::Zero(), P, phi;
   for (Index p = nl.offset[i]; p < nl.offset[i + 1]; ++p) {
     const double r = nl.r[p];
+    if (!(r > 0)) continue;  // coincident particles carry no information
     double w, dw;
     kernel.eval(r, w, dw);
     const double kappa = -dw / r * h * h, beta = kappa * h * h / (r * r);

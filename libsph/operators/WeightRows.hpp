@@ -212,7 +212,7 @@ template <int D>
 inline void kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, Index b, Index e, PairWeights<D>& out) {
   const double h2 = k.h() * k.h();
   for (Index p = b; p < e; ++p) {
-    const double r = nl.r[p], invR = 1.0 / r;
+    const double r = nl.r[p], invR = r > 0 ? 1.0 / r : 0.0;  // coincident particles: no weight
     double w, dw;
     k.eval(r, w, dw);
     const double kappa = -dw * invR * h2;

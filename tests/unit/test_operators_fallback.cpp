@@ -121,6 +121,18 @@ BOOST_AUTO_TEST_CASE(isolated_particle_and_sparse_rows) {
   for (std::size_t p = 0; p < 2; ++p) BOOST_TEST(s.pw.gradW[p].allFinite());
   Setup<2> k(x, 0.01, DerivativeScheme::corrected, {});
   for (int i = 0; i < 3; ++i) BOOST_TEST(int(k.pw.order[i]) == 0);
+  // two coincident particles inside a lattice: the r = 0 pair gets zero
+  // weights, the rows stay FI and finite
+  auto y = lattice<2>(10, 1.0, 0.0);
+  y.push_back(y[60]);
+  for (auto scheme : {DerivativeScheme::SPH2, DerivativeScheme::corrected, DerivativeScheme::standard}) {
+    Setup<2> c(y, 0.1, scheme, {});
+    for (std::size_t p = 0; p < c.nl.numPairs(); ++p) {
+      BOOST_TEST_REQUIRE(c.pw.gradW[p].allFinite());
+      BOOST_TEST_REQUIRE(std::isfinite(c.pw.lapW[p]));
+    }
+    if (scheme == DerivativeScheme::SPH2) BOOST_TEST(int(c.pw.order[60]) == 2);
+  }
 }
 
 namespace {
