@@ -1,0 +1,166 @@
+#!/usr/bin/python3
+"""shizukuPlot on a hand-made case (design.md 1.1): two time directories with
+a 12 x 8 particle set (fluid with a linear pressure, a row of walls) written
+with VTK's XML writer, postProcessing files with scalars, vectors, a restart
+folder and a density-error histogram, and a reference CSV. The script must
+write every expected PNG, each a real picture (PNG signature, many colours
+for the particle pictures), and fail with exit 1 on bad input.
+
+usage: plotSmoke.py SHIZUKUPLOT WORKDIR
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+import matplotlib.image as mpimg
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+PLOT, WORK = sys.argv[1:3]
+CASE = os.path.join(WORK, "plotCase")
+FAILURES = []
+
+
+def check(cond, what):
+    print(("ok   " if cond else "FAIL ") + what)
+    if not cond:
+        FAILURES.append(what)
+
+
+def write(path, text):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(text)
+
+
+def write_vtp(path, t, d0=0.01):
+    nx, ny = 12, 8
+    xs, ys = np.meshgrid((np.arange(nx) + 0.5) * d0, (np.arange(ny) + 0.5) * d0)
+    x = np.c_[xs.ravel(), ys.ravel(), np.zeros(nx * ny)]
+    walls = np.c_[(np.arange(nx) + 0.5) * d0, np.full(nx, -0.5 * d0), np.zeros(nx)]
+    pts = np.vstack([x, walls])
+    n = len(pts)
+    ptype = np.r_[np.zeros(nx * ny), np.ones(nx)].astype(np.uint8)
+    p = 1000 * 9.81 * (ny * d0 - pts[:, 1]) * (1 + t)
+    U = np.c_[-pts[:, 1], pts[:, 0], np.zeros(n)]
+    rhoN = 1000 * (1 - 0.01 * pts[:, 0] / (nx * d0))
+    poly = vtkPolyData()
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(pts, deep=True))
+    poly.SetPoints(points)
+    cells = vtkCellArray()
+    for i in range(n):
+        cells.InsertNextCell(1)
+        cells.InsertCellPoint(i)
+    poly.SetVerts(cells)
+    for name, arr in (("U", U), ("p", p), ("rhoN", rhoN), ("type", ptype)):
+        a = numpy_to_vtk(arr, deep=True)
+        a.SetName(name)
+        poly.GetPointData().AddArray(a)
+    for name, value in (("spacing", d0), ("rho0", 1000.0), ("time", t), ("dimension", 2.0)):
+        a = vtkDoubleArray()
+        a.SetName(name)
+        a.InsertNextValue(value)
+        poly.GetFieldData().AddArray(a)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    w = vtkXMLPolyDataWriter()
+    w.SetFileName(path)
+    w.SetInputData(poly)
+    w.SetDataModeToBinary()
+    check(w.Write() == 1, f"wrote {path}")
+
+
+def make_case():
+    shutil.rmtree(CASE, ignore_errors=True)
+    for t, name in ((0.0, "0"), (0.1, "0.1")):
+        write_vtp(os.path.join(CASE, name, "particles.vtp"), t)
+    head = "# probes of p\n# columns: time point0 point1\n# units:   s    Pa     Pa\n"
+    write(f"{CASE}/postProcessing/centre/0/p", head + "".join(
+        f"{0.01 * k:g} {100 + k} {50 - k}\n" for k in range(10)))
+    # a restart at 0.05: replaces the rows from 0.05 on
+    write(f"{CASE}/postProcessing/centre/0.05/p", head + "".join(
+        f"{0.05 + 0.01 * k:g} {200 + k} nan\n" for k in range(8)))
+    write(f"{CASE}/postProcessing/cons/0/conservation.dat",
+          "# columns: time volume kineticEnergy momentum\n# units:   s    m^2    J/m           kg/s\n" + "".join(
+              f"{0.01 * k:g} 0.01 {1 - 0.01 * k:g} ({0.1 * k:g} {-0.2 * k:g})\n" for k in range(12)))
+    rows = "".join(f"{-9.75 + 0.5 * k:g} {max(0, 20 - abs(k - 22) * 3)} {max(0, 30 - abs(k - 21) * 2)}\n"
+                   for k in range(40))
+    write(f"{CASE}/postProcessing/dErr/0/densityError.dat",
+          "# columns: time mean rms max mode meanAll rmsAll maxAll modeAll\n# units: s % % % % % % % %\n"
+          "0 0 0 0 0.25 0 0 0 0.25\n0.1 1 1.2 3 1.25 2 3 9 0.75\n")
+    write(f"{CASE}/postProcessing/dErr/0/0.1/histogram.dat",
+          "# columns: binCentre countInterior countAll\n# units:   %         -             -\n" + rows)
+    write(f"{WORK}/reference.csv", "# reference data\ntime,point0,p/point1\n0,90,45\n0.05,150,40\n0.09,180,41\n")
+
+
+def png_ok(path, min_colours):
+    if not os.path.isfile(path):
+        return False, "missing"
+    with open(path, "rb") as f:
+        if f.read(8) != b"\x89PNG\r\n\x1a\n":
+            return False, "not a PNG"
+    img = mpimg.imread(path)
+    colours = len(np.unique(img.reshape(-1, img.shape[-1]), axis=0))
+    return colours >= min_colours and img.shape[0] > 200 and img.shape[1] > 200, \
+        f"{img.shape[1]}x{img.shape[0]}, {colours} colours"
+
+
+def wall_strip(path):
+    """Width/height ratio and fill fraction of the grey (0.6) wall pixels."""
+    img = mpimg.imread(path)[:, :, :3]
+    grey = np.all(np.abs(img - 0.6) < 0.01, axis=2)
+    if not grey.any():
+        return 0.0, 0.0
+    # the strip: rows and columns mostly grey (anti-aliased text has scattered grey pixels)
+    rows = np.nonzero(grey.sum(axis=1) > 0.5 * grey.sum(axis=1).max())[0]
+    cols = np.nonzero(grey.sum(axis=0) > 0.5 * grey.sum(axis=0).max())[0]
+    h, w = rows.max() - rows.min() + 1, cols.max() - cols.min() + 1
+    block = grey[rows.min():rows.max() + 1, cols.min():cols.max() + 1]
+    return w / h, block.mean()
+
+
+def run(args):
+    return subprocess.run([PLOT] + args, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+
+
+def main():
+    make_case()
+    r = run(["-case", CASE, "-field", "p", "-reference", os.path.join(WORK, "reference.csv")])
+    print(r.stdout)
+    check(r.returncode == 0, "shizukuPlot -field p exits 0")
+    plots = os.path.join(CASE, "plots")
+    # particle pictures: a linear pressure through the jet map gives many colours
+    for name in ("p_0.png", "p_0.1.png"):
+        ok, what = png_ok(os.path.join(plots, name), 50)
+        check(ok, f"{name}: {what}")
+    # particles are squares of side d0: the 12 walls (one row, spacing d0) tile a
+    # 12 x 1 strip without gaps (ratio within pixel rounding: the strip is ~70 px high)
+    ratio, fill = wall_strip(os.path.join(plots, "p_0.png"))
+    check(abs(ratio - 12) < 0.6 and fill > 0.97, f"wall row drawn as a 12:1 strip of squares: {ratio:.2f}:1, "
+          f"filled {100 * fill:.1f} %")
+    for name in ("centre_p.png", "cons_conservation.png", "dErr_densityError.png", "dErr_histogram_0.1.png"):
+        ok, what = png_ok(os.path.join(plots, name), 10)
+        check(ok, f"{name}: {what}")
+    check("Warning" not in r.stdout, "the reference columns matched")
+    r = run(["-case", CASE, "-field", "Ux", "-time", "latestTime", "-what", "particles"])
+    check(r.returncode == 0 and os.path.isfile(os.path.join(plots, "Ux_0.1.png"))
+          and not os.path.exists(os.path.join(plots, "Ux_0.png")), "-field Ux -time latestTime: one picture")
+    r = run(["-case", CASE, "-field", "densityError", "-time", "0", "-what", "particles", "-range", "-1", "1"])
+    ok, what = png_ok(os.path.join(plots, "densityError_0.png"), 20)
+    check(r.returncode == 0 and ok, f"-field densityError -range: {what}")
+    for bad, why in ((["-case", CASE, "-field", "nothing", "-what", "particles"], "unknown field"),
+                     (["-case", CASE, "-time", "7", "-what", "particles"], "unknown time"),
+                     (["-case", os.path.join(WORK, "none")], "missing case"),
+                     (["-case", CASE, "-what", "pictures"], "unknown -what")):
+        r = run(bad)
+        check(r.returncode == 1 and "error" in r.stdout, f"{why}: exit 1 with a message")
+    print(f"\n{len(FAILURES)} failure(s)")
+    return 1 if FAILURES else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
