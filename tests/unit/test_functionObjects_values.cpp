@@ -304,3 +304,25 @@ BOOST_AUTO_TEST_CASE(probes_input_errors) {
   Probes<2> pr2("b", d2);
   BOOST_TEST(std::abs(pr2.points()[0][1] - 0.2) < 1e-15);
 }
+
+BOOST_AUTO_TEST_CASE(density_error_3d) {
+  // 4^3 lattice: the 8 inner particles interior with e = 1.125 %, the rest free with e = -3.375 %
+  auto s = lattice<3>(4, 0.1, Vec<3>(0, 0, 0));
+  auto& p = s.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const int ix = int(i) % 4, iy = int(i) / 4 % 4, iz = int(i) / 16;
+    const bool inner = ix % 3 != 0 && iy % 3 != 0 && iz % 3 != 0;
+    p.surface[i] = std::uint8_t(inner ? SurfaceClass::interior : SurfaceClass::free);
+    p.density[i] = s.rho0 * (1 - (inner ? 1.125 : -3.375) / 100);
+  }
+  auto d = dict("type densityError;");
+  DensityError<3> de("dE", d);
+  const auto& r = de.evaluate(s);
+  BOOST_TEST(r.interior.count == 8);
+  BOOST_TEST(std::abs(r.interior.mean - 1.125) < 1e-10);
+  BOOST_TEST(r.interior.mode == 1.125);
+  BOOST_TEST(r.all.count == 64);
+  BOOST_TEST(std::abs(r.all.mean - (8 * 1.125 - 56 * 3.375) / 64) < 1e-10);
+  BOOST_TEST(std::abs(r.all.max - 3.375) < 1e-10);
+  BOOST_TEST(r.all.mode == -3.375);
+}
