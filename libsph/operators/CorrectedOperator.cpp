@@ -18,9 +18,10 @@ class CorrectedOperator final : public DerivativeOperator<D> {
   void computeWeights(const Kernel<D>& kernel, double V, const NeighbourList<D>& nl,
                       const std::vector<std::uint8_t>& computeFor, PairWeights<D>& out) const override {
     const double h = kernel.h();
+    const weights::Limits<D> lim(this->thresholds_);
     weights::computeRows<D>(nl, computeFor, out, [&](std::size_t, Index b, Index e) -> std::uint8_t {
       weights::kernelRow(kernel, nl, b, e, out);
-      if (weights::firstOrderRow(h, V, nl, b, e, out)) return weights::orderFirst;
+      if (weights::firstOrderRow(lim, h, V, nl, b, e, out)) return weights::orderFirst;
       weights::standardRow(h, nl, b, e, out);
       return weights::orderStandard;
     });

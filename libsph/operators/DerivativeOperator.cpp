@@ -32,6 +32,13 @@ std::unique_ptr<DerivativeOperator<D>> DerivativeOperator<D>::create(DerivativeS
   throw InputError("unknown derivative scheme");
 }
 
+template <int D>
+std::unique_ptr<DerivativeOperator<D>> DerivativeOperator<D>::create(DerivativeScheme s, const FallbackThresholds& t) {
+  auto op = create(s);
+  op->thresholds_ = t;
+  return op;
+}
+
 template class DerivativeOperator<2>;
 template class DerivativeOperator<3>;
 

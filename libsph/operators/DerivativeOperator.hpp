@@ -32,16 +32,36 @@ struct PairWeights {
   std::vector<std::uint8_t> order; // per particle: 2 = FI, 1 = first order, 0 = standard, 255 = none
 };
 
+// Fallback chain of SPH2 (methods.md 3.4), per particle: FI if the particle has
+// at least minNeighboursFI neighbours and rcond(M) > minRcondFI, else first
+// order if at least minNeighboursFirstOrder neighbours and rcond(A) >
+// minRcondFirstOrder, else standard. `corrected` uses the first-order test.
+// A neighbour minimum of 0 means the default of the dimension (FI: 6 in 2D,
+// 12 in 3D; first order: 3 / 4). rcond is the exact 1-norm value.
+struct FallbackThresholds {
+  double minRcondFI = 1e-4;
+  double minRcondFirstOrder = 1e-3;
+  int minNeighboursFI = 0;
+  int minNeighboursFirstOrder = 0;
+};
+
 template <int D>
 class DerivativeOperator {
  public:
   virtual ~DerivativeOperator() = default;
   virtual DerivativeScheme scheme() const = 0;
-  // Fill `out` for every particle i with computeFor[i] true (other particles get zero
-  // weights and order 255). V = particle volume (uniform). Parallel over particles.
+  // Fill `out` for every particle i with computeFor[i] != 0 (other particles get zero
+  // gradient and Laplacian weights, order 255, and keep the kernel values w already stored). computeFor[i] == 2 marks a free-surface row: SPH2
+  // starts its fallback chain there at first order. V = particle volume (uniform).
+  // Parallel over particles.
   virtual void computeWeights(const Kernel<D>& kernel, double V, const NeighbourList<D>& nl,
                               const std::vector<std::uint8_t>& computeFor, PairWeights<D>& out) const = 0;
   static std::unique_ptr<DerivativeOperator> create(DerivativeScheme s);
+  static std::unique_ptr<DerivativeOperator> create(DerivativeScheme s, const FallbackThresholds& t);
+  const FallbackThresholds& thresholds() const { return thresholds_; }
+
+ protected:
+  FallbackThresholds thresholds_;
 };
 
 // Operators applied with precomputed weights (rows with order 255 give zero).

@@ -2,7 +2,12 @@
 // (5x5 in 2D, 9x9 in 3D, scaled by h) with the per-particle fallback chain of
 // methods.md 3.4: FI if n >= 6 (2D) / 12 (3D) neighbours and rcond(M) > 1e-4,
 // else first-order KGC + renormalised Laplacian (3.5) if rcond(A) > 1e-3 and
-// n >= 3 / 4, else standard SPH. order[i] records 2 / 1 / 0.
+// n >= 3 / 4, else standard SPH (defaults of FallbackThresholds, which
+// create(scheme, thresholds) can change). order[i] records 2 / 1 / 0. Rows marked 2 in
+// computeFor (free-surface particles) start the chain at first order: on the
+// one-sided stencils of a free surface meeting a wall the FI weights grow two
+// orders of magnitude larger than the kernel gradient and make the projection
+// unstable (measured on the dam break toe), while the first-order weights stay bounded.
 // Reads no dictionary keys (selected by `derivatives SPH2;` in system/sphSchemes).
 #include "operators/Schemes.hpp"
 #include "operators/WeightRows.hpp"
@@ -18,10 +23,12 @@ class SPH2Operator final : public DerivativeOperator<D> {
   void computeWeights(const Kernel<D>& kernel, double V, const NeighbourList<D>& nl,
                       const std::vector<std::uint8_t>& computeFor, PairWeights<D>& out) const override {
     const double h = kernel.h();
-    weights::computeRows<D>(nl, computeFor, out, [&](std::size_t, Index b, Index e) -> std::uint8_t {
+    const weights::Limits<D> lim(this->thresholds_);
+    weights::computeRows<D>(nl, computeFor, out, [&](std::size_t i, Index b, Index e) -> std::uint8_t {
       weights::kernelRow(kernel, nl, b, e, out);
-      if (weights::fiRow(h, V, nl, b, e, out)) return weights::orderFI;
-      if (weights::firstOrderRow(h, V, nl, b, e, out)) return weights::orderFirst;
+      const bool surfaceRow = !computeFor.empty() && computeFor[i] == 2;
+      if (!surfaceRow && weights::fiRow(lim, h, V, nl, b, e, out)) return weights::orderFI;
+      if (weights::firstOrderRow(lim, h, V, nl, b, e, out)) return weights::orderFirst;
       weights::standardRow(h, nl, b, e, out);
       return weights::orderStandard;
     });

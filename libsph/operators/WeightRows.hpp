@@ -24,12 +24,15 @@
 namespace shizuku {
 namespace weights {
 
-// Fallback thresholds of methods.md 3.4.
-template <int D> struct Thresholds {
-  static constexpr int minNeighboursFI = D == 2 ? 6 : 12;
-  static constexpr double minRcondFI = 1e-4;
-  static constexpr int minNeighboursFirstOrder = D == 2 ? 3 : 4;
-  static constexpr double minRcondFirstOrder = 1e-3;
+// Fallback thresholds of methods.md 3.4 with the dimension defaults filled in.
+template <int D> struct Limits {
+  int minNeighboursFI, minNeighboursFirstOrder;
+  double minRcondFI, minRcondFirstOrder;
+  explicit Limits(const FallbackThresholds& t)
+      : minNeighboursFI(t.minNeighboursFI > 0 ? t.minNeighboursFI : (D == 2 ? 6 : 12)),
+        minNeighboursFirstOrder(t.minNeighboursFirstOrder > 0 ? t.minNeighboursFirstOrder : (D == 2 ? 3 : 4)),
+        minRcondFI(t.minRcondFI),
+        minRcondFirstOrder(t.minRcondFirstOrder) {}
 };
 
 enum Order : std::uint8_t { orderStandard = 0, orderFirst = 1, orderFI = 2, orderNone = 255 };
@@ -225,10 +228,11 @@ inline void kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, Index b, I
 // FI row (after kernelRow). Returns false (kernelRow scratch untouched) if the
 // stencil fails the FI criteria.
 template <int D>
-inline bool fiRow(double h, double V, const NeighbourList<D>& nl, Index b, Index e, PairWeights<D>& out) {
+inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<D>& nl, Index b, Index e,
+                  PairWeights<D>& out) {
   using T = Taylor<D>;
   constexpr int NB = T::NB;
-  if (e - b < Thresholds<D>::minNeighboursFI) return false;
+  if (e - b < lim.minNeighboursFI) return false;
   const double invH = 1.0 / h;
   using Mo = Monomials<D>;
   static constexpr Mo mo{};
@@ -263,7 +267,7 @@ inline bool fiRow(double h, double V, const NeighbourList<D>& nl, Index b, Index
   for (int k = 0; k < n2; ++k)
     for (int m = 0; m < n2; ++m) S[D + k][D + m] = (m < D ? 0.5 : 1.0) * B4[mo.mul22[k][m]];
   double Sinv[NB][NB];
-  if (!invertSmall<NB>(S, Sinv) || !(rcond1<NB>(S, Sinv) > Thresholds<D>::minRcondFI)) return false;
+  if (!invertSmall<NB>(S, Sinv) || !(rcond1<NB>(S, Sinv) > lim.minRcondFI)) return false;
   // tilde gradW = G Phi, tilde lapW = ell . Phi with Phi = (kappa s ; beta q)
   const double gScale = invH / V, lScale = invH * invH / V;
   double G[D][NB], ell[NB];
@@ -309,9 +313,9 @@ inline void standardRow(double h, const NeighbourList<D>& nl, Index b, Index e, 
 // First-order row (after kernelRow): KGC gradient and renormalised Laplacian.
 // Returns false (weights untouched) if the 2x2/3x3 correction is singular.
 template <int D>
-inline bool firstOrderRow(double h, double V, const NeighbourList<D>& nl, Index b, Index e,
+inline bool firstOrderRow(const Limits<D>& lim, double h, double V, const NeighbourList<D>& nl, Index b, Index e,
                           PairWeights<D>& out) {
-  if (e - b < Thresholds<D>::minNeighboursFirstOrder) return false;
+  if (e - b < lim.minNeighboursFirstOrder) return false;
   const double invH = 1.0 / h;
   Mat<D> A = Mat<D>::Zero(), B = Mat<D>::Zero();
   Vec<D> o = Vec<D>::Zero();
@@ -323,7 +327,7 @@ inline bool firstOrderRow(double h, double V, const NeighbourList<D>& nl, Index 
   }
   A *= V;  // = V sum gradW (x) r_ji
   Mat<D> L;
-  if (!(invertWithRcond<D>(A, L) > Thresholds<D>::minRcondFirstOrder)) return false;
+  if (!(invertWithRcond<D>(A, L) > lim.minRcondFirstOrder)) return false;
   // renormalised Laplacian (scaled units: s = r_ji/h)
   Mat<D> Binv;
   bool ok = invertWithRcond<D>(B, Binv) > 0;
@@ -350,7 +354,9 @@ inline bool firstOrderRow(double h, double V, const NeighbourList<D>& nl, Index 
 
 // Resize the outputs and run `row(i, b, e)` -> order for every particle with
 // computeFor[i] != 0 (all particles if computeFor is empty); other rows get
-// zero weights and order 255. OpenMP over particles.
+// zero gradient and Laplacian weights and order 255, and keep whatever kernel
+// values w the caller stored for them (the solver fills w for every pair first:
+// wall rows need them). OpenMP over particles.
 template <int D, class Row>
 void computeRows(const NeighbourList<D>& nl, const std::vector<std::uint8_t>& computeFor,
                  PairWeights<D>& out, Row&& row) {
@@ -370,7 +376,6 @@ void computeRows(const NeighbourList<D>& nl, const std::vector<std::uint8_t>& co
     } else {
       out.order[i] = orderNone;
       for (Index p = b; p < e; ++p) {
-        out.w[p] = 0;
         out.gradW[p].setZero();
         out.lapW[p] = 0;
       }

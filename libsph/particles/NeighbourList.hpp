@@ -39,10 +39,13 @@ struct NeighbourList {
 template <int D>
 class NeighbourSearch {
  public:
+  // Throws InputError if radius <= 0 or a periodic length is < 2 radius.
   explicit NeighbourSearch(double radius, PeriodicBox<D> box = {});
   double radius() const { return radius_; }
   const PeriodicBox<D>& box() const { return box_; }
-  // All pairs with 0 < |r_ij| < radius (OpenMP parallel).
+  // All pairs j != i with |r_ij| < radius (coincident particles give r = 0),
+  // rows sorted by j and identical for any thread count (OpenMP parallel).
+  // Throws NumericalError on a non-finite position.
   void build(const std::vector<Vec<D>>& x, NeighbourList<D>& out);
   // A permutation that sorts particles by cell (for memory locality):
   // new index k holds old particle perm[k].

@@ -4,6 +4,8 @@
 // single row to standard SPH (order 0); an isolated particle gets standard
 // (zero) weights. Weights stay finite, the order flag is what the operator
 // used, and each fallback keeps its own exactness (linear fields for order 1).
+// Also: rows marked 2 in computeFor (free-surface rows) start at first order,
+// and FallbackThresholds move the switch points.
 #define BOOST_TEST_MODULE operators_fallback
 #include <boost/test/unit_test.hpp>
 
@@ -160,4 +162,32 @@ BOOST_AUTO_TEST_CASE(fallback_chain_3d) {
   BOOST_TEST(sPlane.order == 0);
   BOOST_TEST(sHalf.linearErr < 1e-9);
   BOOST_TEST(sSheet.linearErr < 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(surface_rows_and_thresholds) {
+  const double d0 = 0.02;
+  const auto flatSet = select(lattice<2>(50, 1.0, 0.0), flat);
+  const std::size_t i = closest(flatSet, Vec<2>(0.5, 0.5));    // on the surface, rcond(M) = 5.1e-3
+  const std::size_t k = closest(flatSet, Vec<2>(0.5, 0.3));    // interior, rcond(M) = 0.2
+  std::vector<std::uint8_t> mask(flatSet.size(), 0);
+  mask[i] = 1;
+  mask[k] = 2;  // a free-surface row: SPH2 starts at first order
+  Setup<2> s(flatSet, d0, DerivativeScheme::SPH2, mask);
+  BOOST_TEST(int(s.pw.order[i]) == 2);
+  BOOST_TEST(int(s.pw.order[k]) == 1);
+  // a stricter FI threshold sends the surface particle to first order
+  FallbackThresholds t;
+  t.minRcondFI = 1e-2;
+  auto op = DerivativeOperator<2>::create(DerivativeScheme::SPH2, t);
+  BOOST_TEST(op->thresholds().minRcondFI == 1e-2);
+  std::fill(mask.begin(), mask.end(), 1);
+  op->computeWeights(s.kernel, s.V, s.nl, mask, s.pw);
+  BOOST_TEST(int(s.pw.order[i]) == 1);
+  BOOST_TEST(int(s.pw.order[k]) == 2);
+  // a higher neighbour minimum does the same
+  FallbackThresholds n;
+  n.minNeighboursFI = 13;  // the surface particle has 12
+  DerivativeOperator<2>::create(DerivativeScheme::SPH2, n)->computeWeights(s.kernel, s.V, s.nl, mask, s.pw);
+  BOOST_TEST(int(s.pw.order[i]) == 1);
+  BOOST_TEST(int(s.pw.order[k]) == 2);
 }
