@@ -7,6 +7,7 @@
 // was expected". Reads no dictionary keys itself.
 #include "core/Dictionary.hpp"
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -343,6 +344,8 @@ class DictionaryParser {
       case Token::number:
         v.kind = DictValue::Kind::number;
         v.number = t.numberValue;
+        if (!std::isfinite(v.number))
+          fail(t.where, key, "the number " + t.text + " is out of range (a double holds up to about 1.8e308)");
         break;
       case Token::word: v.kind = DictValue::Kind::word; return v;
       case Token::string: v.kind = DictValue::Kind::string; return v;
@@ -407,6 +410,8 @@ class DictionaryParser {
     if (v.hasUnit) fail(u.where, key, "the value already has a unit [" + v.unitText + "]");
     if (v.kind == DictValue::Kind::number) {
       v.number *= unit.factor;
+      if (!std::isfinite(v.number))
+        fail(u.where, key, "the number " + v.text + " [" + u.text + "] is out of range in SI units");
     } else if (v.kind == DictValue::Kind::list) {
       for (auto& item : v.items) applyUnit(item, unit, u, key);
     } else {

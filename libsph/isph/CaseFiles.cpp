@@ -29,6 +29,7 @@ void CaseFiles::checkAllRead() const {
 }
 
 int caseDimension(const std::string& caseDir) {
+  if (!fs::is_directory(caseDir)) throw InputError(caseDir + ": case directory not found");
   const Dictionary d = Dictionary::fromFile(caseDir + "/system/particlesDict");
   if (d.found("dimension")) {
     const int n = d.getInt("dimension");

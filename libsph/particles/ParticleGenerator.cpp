@@ -5,6 +5,7 @@
 // muParser expression), and the periodic box. Every rule and key is listed in
 // ParticleGenerator.hpp.
 #include "particles/ParticleGenerator.hpp"
+#include "core/Log.hpp"
 #include <muParser.h>
 #include <algorithm>
 #include <array>
@@ -17,6 +18,9 @@ namespace shizuku {
 namespace {
 
 constexpr double kSlack = 1e-9;  // round-off slack, in units of d0
+// Coordinates farther than this many spacings from the origin are refused:
+// lattice indices must stay exact in a double and fit a long.
+constexpr double kMaxSpacingsFromOrigin = 1e12;
 
 std::string fmt(double x) {
   std::ostringstream s;
@@ -126,18 +130,38 @@ bool hasKey(const Dictionary& d, const std::string& key) {
   return std::find(k.begin(), k.end(), key) != k.end();
 }
 
+// A point of the geometry must lie within kMaxSpacingsFromOrigin spacings of the origin.
 template <int D>
-void readBox(const Dictionary& r, Region<D>& reg) {
+void checkReach(const Dictionary& r, const std::string& key, const Vec<D>& x, double d0) {
+  for (int k = 0; k < D; ++k)
+    if (!(std::abs(x[k]) / d0 <= kMaxSpacingsFromOrigin))
+      r.error(key, fmt<D>(x) + " lies more than " + fmt(kMaxSpacingsFromOrigin) + " spacings (d0 = " + fmt(d0) +
+                       " m) from the origin");
+}
+
+template <int D>
+void readBox(const Dictionary& r, Region<D>& reg, double d0) {
   reg.min = r.getVector<D>("min", dim::length);
   reg.max = r.getVector<D>("max", dim::length);
+  checkReach<D>(r, "min", reg.min, d0);
+  checkReach<D>(r, "max", reg.max, d0);
   for (int k = 0; k < D; ++k)
     if (!(reg.max[k] > reg.min[k]))
       r.error("max", "max " + fmt<D>(reg.max) + " must exceed min " + fmt<D>(reg.min) + " in every direction (" +
                          axisName(k) + ")");
 }
 
+// "fluid region 'water' would hold 1e+08 particles, more than maxParticles 1e+07 ..."
+[[noreturn]] void tooMany(const Dictionary& regions, const std::string& name, const char* kind, double count,
+                          double limit, double d0) {
+  regions.error(name, std::string(kind) + " region '" + name + "' would hold " + fmt(count) +
+                          " particles, more than maxParticles " + fmt(limit) + " (spacing " + fmt(d0) +
+                          " m): use a larger spacing, or raise maxParticles in particlesDict");
+}
+
 template <int D>
-Region<D> readFluid(const Dictionary& r, const std::string& name, double d0) {
+Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
+                    double limit) {
   Region<D> reg;
   reg.name = name;
   reg.dict = &r;
@@ -145,32 +169,47 @@ Region<D> readFluid(const Dictionary& r, const std::string& name, double d0) {
     if (hasKey<D>(r, k)) r.error(k, std::string("only wall regions take '") + k + "'");
   const std::string shape = r.getOption("shape", {"box", "circle", "sphere"});
   if (shape == "box") {
-    readBox<D>(r, reg);
+    readBox<D>(r, reg, d0);
+    double count = 1;
+    std::array<double, D> n;
     for (int k = 0; k < D; ++k) {
-      reg.cells[k] = long(std::floor((reg.max[k] - reg.min[k]) / d0 + kSlack));
-      if (reg.cells[k] < 1)
+      n[k] = std::floor((reg.max[k] - reg.min[k]) / d0 + kSlack);
+      if (n[k] < 1)
         r.error("max", std::string("the box is thinner than one spacing (d0 = ") + fmt(d0) + " m) in " +
                            axisName(k));
+      count *= n[k];
+    }
+    if (count > limit) tooMany(regions, name, "fluid", count, limit, d0);
+    for (int k = 0; k < D; ++k) {
+      reg.cells[k] = long(n[k]);
       reg.max[k] = reg.min[k] + reg.cells[k] * d0;  // the filled part
     }
   } else {
     reg.circle = true;
     reg.centre = r.getVector<D>("centre", dim::length);
+    checkReach<D>(r, "centre", reg.centre, d0);
     reg.radius = r.getScalar("radius", dim::length);
     if (!(reg.radius > 0)) r.error("radius", "must be positive, found " + fmt(reg.radius));
+    if (!(reg.radius / d0 <= kMaxSpacingsFromOrigin))
+      r.error("radius", fmt(reg.radius) + " m is more than " + fmt(kMaxSpacingsFromOrigin) + " spacings");
+    // Lattice points inside: about the disc area (sphere volume) over d0^D.
+    const double a = reg.radius / d0;
+    const double count = D == 2 ? M_PI * a * a : 4.0 / 3.0 * M_PI * a * a * a;
+    if (count > limit) tooMany(regions, name, "fluid", std::round(count), limit, d0);
   }
   return reg;
 }
 
 template <int D>
-Region<D> readWall(const Dictionary& r, const std::string& name, double d0) {
+Region<D> readWall(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
+                   double limit) {
   Region<D> reg;
   reg.name = name;
   reg.dict = &r;
   reg.fluid = false;
   if (hasKey<D>(r, "velocity")) r.error("velocity", "wall regions are fixed; velocity is for fluid regions only");
   r.getOption("shape", {"box"});
-  readBox<D>(r, reg);
+  readBox<D>(r, reg, d0);
   reg.layers = r.getIntOr("layers", 3);
   if (reg.layers < 1) r.error("layers", "must be at least 1, found " + std::to_string(reg.layers));
   if (r.found("open")) {
@@ -186,13 +225,20 @@ Region<D> readWall(const Dictionary& r, const std::string& name, double d0) {
       reg.open[it - faces.begin()] = true;
     }
   }
+  double inner = 1, outer = 1;
+  std::array<double, D> n;
   for (int k = 0; k < D; ++k) {
-    const double n = (reg.max[k] - reg.min[k]) / d0;
-    reg.cells[k] = std::lround(n);
-    if (std::abs(n - double(reg.cells[k])) > 1e-6)
+    n[k] = std::round((reg.max[k] - reg.min[k]) / d0);
+    if (std::abs((reg.max[k] - reg.min[k]) / d0 - n[k]) > 1e-6)
       r.error("max", std::string("the wall box size in ") + axisName(k) + " (" + fmt(reg.max[k] - reg.min[k]) +
                          " m) is not a whole number of spacings (d0 = " + fmt(d0) +
                          " m), so the wall particles would not sit on one lattice");
+    inner *= n[k];
+    outer *= n[k] + double(reg.layers) * (int(!reg.open[2 * k]) + int(!reg.open[2 * k + 1]));
+  }
+  if (outer - inner > limit) tooMany(regions, name, "wall", outer - inner, limit, d0);
+  for (int k = 0; k < D; ++k) {
+    reg.cells[k] = long(n[k]);
     reg.outerMin[k] = reg.min[k] - (reg.open[2 * k] ? 0 : reg.layers * d0);
     reg.outerMax[k] = reg.max[k] + (reg.open[2 * k + 1] ? 0 : reg.layers * d0);
   }
@@ -362,6 +408,8 @@ PeriodicBox<D> readPeriodic(const Dictionary& dict, double d0) {
   if (!p) return box;
   box.lo = p->getVector<D>("min", dim::length);
   box.hi = p->getVector<D>("max", dim::length);
+  checkReach<D>(*p, "min", box.lo, d0);
+  checkReach<D>(*p, "max", box.hi, d0);
   std::vector<std::string> axes;
   for (int k = 0; k < D; ++k) axes.push_back(axisName(k));
   std::vector<std::string> dirs = axes;
@@ -388,12 +436,72 @@ PeriodicBox<D> readPeriodic(const Dictionary& dict, double d0) {
 
 }  // namespace
 
+// Is x inside the wall's container: strictly inside its surface box, with no
+// bound on an open side?
 template <int D>
-GeneratedParticles<D> generateParticles(const Dictionary& dict) {
+bool inContainer(const Region<D>& w, const Vec<D>& x) {
+  for (int k = 0; k < D; ++k) {
+    if (!w.open[2 * k] && !(x[k] > w.min[k])) return false;
+    if (!w.open[2 * k + 1] && !(x[k] < w.max[k])) return false;
+  }
+  return true;
+}
+
+// Closed face of w (0..2D-1, -x +x -y ...) that x lies beyond: past the
+// layers on that side, within the face's span in the other directions; -1 if none.
+template <int D>
+int beyondFace(const Region<D>& w, const Vec<D>& x) {
+  for (int k = 0; k < D; ++k) {
+    bool span = true;
+    for (int j = 0; j < D; ++j)
+      if (j != k && !(x[j] > w.min[j] && x[j] < w.max[j])) span = false;
+    if (!span) continue;
+    if (!w.open[2 * k] && x[k] < w.outerMin[k]) return 2 * k;
+    if (!w.open[2 * k + 1] && x[k] > w.outerMax[k]) return 2 * k + 1;
+  }
+  return -1;
+}
+
+// With walls present, fluid must start inside a wall's container; fluid on
+// both sides of a closed wall face is allowed (e.g. a submerged closed box)
+// but reported.
+template <int D>
+void checkAgainstWalls(const Dictionary& regions, const Region<D>& f, const std::vector<Region<D>>& walls) {
+  if (walls.empty()) return;
+  bool anyInside = false;
+  for (const auto& w : walls) {
+    std::size_t inside = 0, beyond = 0;
+    int face = -1;
+    for (const auto& x : f.points) {
+      if (inContainer(w, x)) ++inside;
+      else if (int b = beyondFace(w, x); b >= 0) { ++beyond; face = b; }
+    }
+    anyInside = anyInside || inside > 0;
+    if (inside > 0 && beyond > 0)
+      Log::get().warning(regions.location(f.name).str() + ": fluid region '" + f.name + "' lies on both sides of the " +
+                         faceNames(D)[face] + " face of wall '" + w.name + "': " + std::to_string(inside) +
+                         " particles inside it, " + std::to_string(beyond) + " outside");
+  }
+  if (!anyInside) {
+    std::string names;
+    for (const auto& w : walls) names += (names.empty() ? "'" : ", '") + w.name + "'";
+    regions.error(f.name, "fluid region '" + f.name + "' lies outside every wall (" + names +
+                              "): no particle of it is inside a wall box (open sides extend the box)");
+  }
+}
+
+template <int D>
+GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleCap) {
   GeneratedParticles<D> out;
   const double d0 = dict.getScalar("spacing", dim::length);
   if (!(d0 > 0)) dict.error("spacing", "must be positive, found " + fmt(d0));
   const double tol = kSlack * d0;
+  // maxParticles: a bound on the particle count checked before anything is
+  // allocated (Index is 32-bit); a caller's cap may lower it further.
+  double limit = dict.getScalarOr("maxParticles", kDefaultMaxParticles, dim::none);
+  if (!(limit >= 1 && limit <= 2147483647.0))
+    dict.error("maxParticles", "must be between 1 and 2147483647, found " + fmt(limit));
+  if (particleCap > 0) limit = std::min(limit, particleCap);
   // `dimension` (optional) is how the solver picks 2D or 3D; it must agree.
   if (dict.found("dimension") && dict.getInt("dimension") != D)
     dict.error("dimension", "is " + std::to_string(dict.getInt("dimension")) + " but the particles are being built in " +
@@ -406,11 +514,30 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict) {
   for (const auto& name : regionsDict.keys()) {
     const Dictionary& r = regionsDict.subDict(name);
     if (r.getOption("type", {"fluid", "wall"}) == "fluid")
-      fluids.push_back(readFluid<D>(r, name, d0));
+      fluids.push_back(readFluid<D>(r, name, d0, regionsDict, limit));
     else
-      walls.push_back(readWall<D>(r, name, d0));
+      walls.push_back(readWall<D>(r, name, d0, regionsDict, limit));
   }
   if (fluids.empty()) regionsDict.error("regions", "no fluid region (a region with 'type fluid;') is defined");
+  {
+    // Each region was checked alone; now all of them together (upper bounds:
+    // before overlap removal).
+    double total = 0;
+    for (const auto* list : {&fluids, &walls})
+      for (const auto& r : *list) {
+        double inner = 1, outer = 1;
+        for (int k = 0; k < D; ++k) {
+          inner *= double(r.cells[k]);
+          outer *= double(r.cells[k]) + double(r.layers) * (int(!r.open[2 * k]) + int(!r.open[2 * k + 1]));
+        }
+        const double a = r.radius / d0;
+        total += r.circle ? (D == 2 ? M_PI * a * a : 4.0 / 3.0 * M_PI * a * a * a) : r.fluid ? inner : outer - inner;
+      }
+    if (total > limit)
+      regionsDict.error("regions", "the regions would hold " + fmt(std::round(total)) + " particles, more than maxParticles " +
+                                       fmt(limit) + " (spacing " + fmt(d0) +
+                                       " m): use a larger spacing, or raise maxParticles in particlesDict");
+  }
   for (std::size_t b = 0; b < fluids.size(); ++b)
     for (std::size_t a = 0; a < b; ++a)
       if (overlap(fluids[a], fluids[b], tol))
@@ -454,6 +581,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict) {
       regionsDict.error(f.name, "fluid region '" + f.name + "' lies entirely inside walls: all " +
                                     std::to_string(n) + " of its particles were removed");
     f.points = std::move(kept);
+    checkAgainstWalls(regionsDict, f, walls);
     for (const auto& x : f.points)
       for (int k = 0; k < D; ++k)
         if (out.periodic.periodic[k] && (x[k] < out.periodic.lo[k] - tol || x[k] >= out.periodic.hi[k] - tol))
@@ -467,9 +595,13 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict) {
   }
   dict.checkAllRead();
 
-  // 4. The particle set: fluid first, then walls.
+  // 4. The particle set: fluid first, then walls. (A disc's count was
+  // estimated from its area; the exact count is checked here.)
   ParticleSet<D>& set = out.set;
   const std::size_t nf = fluidPoints.size(), nw = wallPoints.size(), n = nf + nw;
+  if (double(n) > limit)
+    regionsDict.error("regions", "the regions hold " + std::to_string(n) + " particles, more than maxParticles " +
+                                     fmt(limit) + ": use a larger spacing, or raise maxParticles in particlesDict");
   set.resize(n);
   set.spacing = d0;
 #pragma omp parallel for schedule(static)
@@ -486,7 +618,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict) {
   return out;
 }
 
-template GeneratedParticles<2> generateParticles<2>(const Dictionary&);
-template GeneratedParticles<3> generateParticles<3>(const Dictionary&);
+template GeneratedParticles<2> generateParticles<2>(const Dictionary&, double);
+template GeneratedParticles<3> generateParticles<3>(const Dictionary&, double);
 
 }  // namespace shizuku

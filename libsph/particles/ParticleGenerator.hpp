@@ -7,6 +7,10 @@
 //   dimension 2 | 3 (optional; the solver chooses 2D or 3D from it; must equal D)
 //   regions { <name> { type fluid|wall; shape box|circle; ... } }   (in file order)
 //   periodic { min (..); max (..); directions (x y); }              (optional)
+//   maxParticles N (optional, default 1e7, at most 2^31 - 1): the regions
+//            are counted before anything is allocated (each region alone,
+//            then all together, before overlap removal) and a case over the
+//            limit is an InputError naming the region and the count.
 //
 // Fluid regions
 //   shape box:    min, max. Particles at the cell centres min + (i + 1/2) d0,
@@ -44,11 +48,17 @@
 //
 // Fluid particles closer than 0.5 d0 to a wall particle, or inside a wall's
 // layer region (the box grown by `layers` d0 on its closed sides, minus the
-// open interior), are removed. Errors (InputError, naming file, line and
-// keyword): spacing <= 0, two fluid regions whose shapes overlap (both are
-// named), a fluid region left empty, no fluid at all, a fluid particle outside
-// the periodic box in a periodic direction, a periodic length that is not a
-// whole number of spacings, unknown keywords (checkAllRead on particlesDict).
+// open interior), are removed. When the case has walls, every fluid region
+// must have a particle inside some wall's container (its surface box, open
+// sides unbounded); a region with particles on both sides of a closed wall
+// face is allowed (a submerged closed box) but a warning is logged.
+// Errors (InputError, naming file, line and keyword): spacing <= 0, two
+// fluid regions whose shapes overlap (both are named), a fluid region left
+// empty, no fluid at all, a fluid region outside every wall, a fluid particle
+// outside the periodic box in a periodic direction, a periodic length that is
+// not a whole number of spacings, more particles than maxParticles, a
+// coordinate more than 1e12 spacings from the origin, unknown keywords
+// (checkAllRead on particlesDict).
 //
 // Output: fluid particles first (regions in file order, x fastest), then wall
 // particles; id = index; pressure, density, surface = 0; spacing = d0. Mass
@@ -66,7 +76,12 @@ struct GeneratedParticles {
   PeriodicBox<D> periodic;
 };
 
+// Default of the `maxParticles` keyword.
+constexpr double kDefaultMaxParticles = 1e7;
+
+// particleCap > 0 lowers the dictionary's maxParticles (a program that only
+// previews or fuzzes cases uses it); it never raises it.
 template <int D>
-GeneratedParticles<D> generateParticles(const Dictionary& particlesDict);
+GeneratedParticles<D> generateParticles(const Dictionary& particlesDict, double particleCap = 0);
 
 }  // namespace shizuku

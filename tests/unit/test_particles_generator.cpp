@@ -166,7 +166,7 @@ BOOST_AUTO_TEST_CASE(wall_layers_and_open_faces) {
   // coincide with part of the first one's (4 x 1 box below a 4 x 1 box, 1 layer):
   // the rings share the row y = 1.5, so the union is the 6 x 5 lattice (rows y = -0.5 .. 3.5)
   // minus the two 4 x 1 interiors = 30 - 8 = 22 (without merging: 14 + 14 = 28)
-  auto stacked = generate<2>(R"(spacing 1; regions { f { type fluid; shape box; min (10 10); max (11 11); }
+  auto stacked = generate<2>(R"(spacing 1; regions { f { type fluid; shape box; min (1 0); max (2 1); }
       a { type wall; shape box; min (0 0); max (4 1); layers 1; }
       b { type wall; shape box; min (0 2); max (4 3); layers 1; } })");
   BOOST_TEST(countType(stacked.set, ParticleType::wall) == 22u);
