@@ -26,13 +26,16 @@ template <int D>
 AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, std::size_t w) {
   const auto& nl = s.neighbours;
   AdamiRow row;
-  Vec<D> rw = Vec<D>::Zero();
+  double sum = 0;
+  const Vec<D>& Uw = s.particles.velocity[w];
+  const double invDt = 1.0 / s.dt;
   for (Index k = nl.begin(w); k < nl.end(w); ++k) {
-    if (!s.isFluid(nl.j[k])) continue;
+    const Index f = nl.j[k];
+    if (!s.isFluid(f)) continue;
     row.weightSum += s.weights.w[k];
-    rw += s.weights.w[k] * nl.rij[k];
+    sum += s.weights.w[k] * ((s.uStar[f] - Uw) * invDt).dot(nl.rij[k]);
   }
-  if (row.weightSum > 0) row.rhs = s.rho0 * s.g.dot(rw) / row.weightSum;
+  if (row.weightSum > 0) row.rhs = s.rho0 * sum / row.weightSum;
   return row;
 }
 

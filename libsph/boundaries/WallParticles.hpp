@@ -3,9 +3,15 @@
 //    divergence: the Shepard average of its fluid neighbours' predicted
 //    velocity, u_w = sum_f W_wf u*_f / sum_f W_wf (methods.md 4.2), so still
 //    water sees no artificial velocity jump at the wall.
-//  - AdamiRow: the implicit wall-pressure row
-//      p_w - sum_f (W_wf / sum W) p_f = rho (g - a_w) . sum_f r_wf W_wf / sum_f W_wf,
-//    r_wf = r_w - r_f, a_w = 0 for a fixed tank; p_w = 0 without fluid neighbours.
+//  - AdamiRow: the implicit wall-pressure row (methods.md 11 A), written with the
+//    predicted velocity so that it also carries the kinematic condition:
+//      p_w - sum_f (W_wf / sum W) p_f = rho sum_f W_wf a_f . r_wf / sum_f W_wf,
+//      a_f = (u*_f - U_w) / dt,   r_wf = r_w - r_f,
+//    p_w = 0 without fluid neighbours. For fluid at rest u*_f = g dt and this is
+//    Adami's hydrostatic row rho g . r_wf (so still water stays exact); fluid
+//    moving into the wall raises p_w by the pressure that stops it in one step,
+//    the velocity-Neumann idea of Morikawa et al. (methods.md 7). With the plain
+//    gravity row, fluid moving toward a wall (the dam-break toe) sank into it.
 #pragma once
 #include "operators/FlowState.hpp"
 
@@ -17,7 +23,7 @@ void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u);
 template <int D>
 struct AdamiRow {
   double weightSum = 0;   // sum_f W_wf over fluid neighbours
-  double rhs = 0;         // rho (g - a_w) . sum_f r_wf W_wf / sum W
+  double rhs = 0;         // rho sum_f W_wf a_f . r_wf / sum W
   // Coefficient of fluid neighbour f (pair k of row w): -W_wf / sum W.
   static AdamiRow compute(const FlowState<D>& s, std::size_t w);
 };

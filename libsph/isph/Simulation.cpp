@@ -250,19 +250,30 @@ void Simulation<D>::analyse() {
   auto& P = s_.particles;
   { StageTimers::Scope t(timers_, st_.neighbours); search_->build(P.position, s_.neighbours); }
   {
-    StageTimers::Scope t(timers_, st_.weights);
-    operator_->computeWeights(s_.kernel, s_.V(), s_.neighbours, s_.isFluidMask, s_.weights);
-    // Kernel values of wall rows (the operator fills fluid rows only): walls need
-    // them for <rho>, the Shepard velocity and the Adami pressure rows.
+    StageTimers::Scope t(timers_, st_.density);
+    // Kernel values of every pair (the operator below refills the fluid rows with
+    // identical values): <rho>, the Shepard wall velocity and the Adami rows use them.
     const auto& nl = s_.neighbours;
     const long n = long(s_.size());
+    s_.weights.w.resize(nl.numPairs());
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i)
-      if (!s_.isFluid(i))
-        for (Index k = nl.begin(i); k < nl.end(i); ++k) s_.weights.w[k] = s_.kernel.w(nl.r[k]);
+      for (Index k = nl.begin(i); k < nl.end(i); ++k) s_.weights.w[k] = s_.kernel.w(nl.r[k]);
+    s_.computeDensity();
   }
-  { StageTimers::Scope t(timers_, st_.density); s_.computeDensity(); }
   { StageTimers::Scope t(timers_, st_.freeSurface); freeSurface_->detect(s_); }
+  {
+    StageTimers::Scope t(timers_, st_.weights);
+    // Fluid rows: 1 = the full operator, 2 = free-surface rows (first order at most).
+    const long n = long(s_.size());
+    weightRows_.resize(n);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      const SurfaceClass c = P.surfaceClass(i);
+      weightRows_[i] = !s_.isFluid(i) ? 0 : (c == SurfaceClass::free || c == SurfaceClass::splash) ? 2 : 1;
+    }
+    operator_->computeWeights(s_.kernel, s_.V(), s_.neighbours, weightRows_, s_.weights);
+  }
   if (needs_.surfaceFit) { StageTimers::Scope t(timers_, st_.surfaceFit); computeSurfaceFit(s_); }
 }
 
@@ -304,6 +315,7 @@ void Simulation<D>::solvePressure() {
   StageTimers::Scope t(timers_, st_.ppeSolve);
   report_.ppe = ppe_->solve(s_);
   report_.ppeUnknowns = ppe_->numUnknowns();
+  report_.ppeStandardRows = ppe_->standardRows();
   if (report_.ppe.usedFallback && ++ppeFallbacks_ <= 10)
     Log::get().warning(cat("step ", s_.step + 1, ": ", report_.ppe.message,
                            ppeFallbacks_ == 10 ? " (further fallbacks are counted, not shown)" : ""));

@@ -67,6 +67,7 @@ class Simulation {
   struct StepReport {
     LinearSolveResult ppe;
     long ppeUnknowns = 0;
+    long ppeStandardRows = 0;   // Laplacian rows that fell back to the standard weights
     double maxSpeed = 0;
     long adsCount = -1;
     std::string dtLimiter = "fixed";
@@ -115,6 +116,7 @@ class Simulation {
   std::vector<std::string> written_;
   // Scratch (sized once).
   std::vector<double> source_;
+  std::vector<std::uint8_t> weightRows_;
   std::vector<Vec<D>> du_, dr_;
   std::vector<Mat<D>> gradU_;
   // Last good state (start of the current step).

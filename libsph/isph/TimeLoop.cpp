@@ -266,6 +266,7 @@ int Simulation<D>::run() {
           }
         info(cat("step ", s_.step, "  t = ", s_.time, "  dt = ", s_.dt, " (", report_.dtLimiter, ")  PPE ",
                  report_.ppe.iterations, " it, res ", std::setprecision(2), report_.ppe.residual, std::setprecision(6),
+                 report_.ppeStandardRows ? cat(" (", report_.ppeStandardRows, " std rows)") : "",
                  "  max|U| = ", report_.maxSpeed, "  rhoErr rms = ", std::setprecision(3),
                  nIn ? std::sqrt(sumE2 / nIn) : 0.0, std::setprecision(6), " %",
                  report_.adsCount >= 0 ? cat("  ADS ", report_.adsCount) : "", "  ", std::fixed,

@@ -54,7 +54,8 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
   int* col = A_.innerIndexPtr();
   double* val = A_.valuePtr();
   pinned_ = !anyDirichlet && m > 0;
-#pragma omp parallel for schedule(static)
+  long fallbacks = 0;
+#pragma omp parallel for schedule(static) reduction(+ : fallbacks)
   for (Index r = 0; r < m; ++r) {
     const Index i = rowParticle_[r];
     Index pos = rowStart_[r];
@@ -62,10 +63,22 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
     double diag = 0, rhs = 0;
     auto putDiag = [&]() { diagPos = pos; col[pos] = r; val[pos++] = 0; };
     if (s.isFluid(i)) {
-      // -sum_j V L_ij (p_j - p_i) = -b_i
+      // -sum_j V L_ij (p_j - p_i) = -b_i. A row whose weights break the M-matrix
+      // sign pattern (a negative neighbour weight or a non-positive diagonal, seen
+      // on strongly one-sided stencils near a free surface meeting a wall) would
+      // make the system indefinite; it takes the always-positive standard
+      // (Brookshaw/Morris) weights -2 W'(r)/r instead (methods.md 3.3, 3.4).
+      bool mMatrix = true;
+      double sum = 0;
+      for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+        mMatrix &= s.weights.lapW[k] >= 0;
+        sum += s.weights.lapW[k];
+      }
+      mMatrix &= sum > 0;
+      if (!mMatrix) ++fallbacks;
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const Index j = nl.j[k];
-        const double c = V * s.weights.lapW[k];
+        const double c = V * (mMatrix ? s.weights.lapW[k] : -2.0 * s.kernel.dwdr(nl.r[k]) / nl.r[k]);
         diag += c;
         if (unknown_[j] < 0) continue;
         if (diagPos < 0 && j > i) putDiag();
@@ -89,6 +102,7 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
     val[diagPos] = diag;
     b_[r] = rhs;
   }
+  standardRows_ = fallbacks;
   if (pinned_) {
     // Fix the pressure level: the first fluid unknown gets p = 0.
     for (Index r = 0; r < m; ++r)

@@ -25,6 +25,8 @@ class PressureEquation {
   const SparseMatrixR& matrix() const { return A_; }
   const Eigen::VectorXd& rhs() const { return b_; }
   bool pinned() const { return pinned_; }
+  // Rows that broke the M-matrix sign pattern and took the standard Laplacian (last assembly).
+  long standardRows() const { return standardRows_; }
 
  private:
   std::unique_ptr<LinearSolver> solver_;
@@ -34,6 +36,7 @@ class PressureEquation {
   SparseMatrixR A_;
   Eigen::VectorXd b_, x_;
   bool pinned_ = false;
+  long standardRows_ = 0;
 };
 
 }  // namespace shizuku

@@ -13,6 +13,7 @@ FreeSurfaceParameters FreeSurfaceParameters::read(const Dictionary* dict, int di
   p.splashThreshold = dict->getScalarOr("splashThreshold", p.splashThreshold, dim::none);
   p.vicinityRadius = dict->getScalarOr("vicinityRadius", p.vicinityRadius, dim::none);
   p.enabled = dict->getSwitchOr("enabled", true);
+  p.scanRegion = dict->getSwitchOr("scanRegion", false);
   if (p.splashThreshold > p.candidateThreshold)
     dict->error("splashThreshold", "must not exceed candidateThreshold");
   if (p.vicinityRadius <= 0 || p.vicinityRadius > 2.0)
@@ -59,7 +60,7 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
   const double coneRadius2 = 2.0 * h * h, cosCone = std::cos(M_PI / 4.0);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
-    if (P.surface[i] != std::uint8_t(SurfaceClass::free)) continue;
+    if (!par_.scanRegion || P.surface[i] != std::uint8_t(SurfaceClass::free)) continue;
     const Vec<D>& ni = P.normal[i];
     if (ni.squaredNorm() == 0) continue;
     bool covered = false;
