@@ -8,7 +8,10 @@
 #include "io/VtpFile.hpp"
 #include <algorithm>
 #include <cstdio>
+#include <cerrno>
+#include <csignal>
 #include <dirent.h>
+#include <filesystem>
 #include <unistd.h>
 
 namespace shizuku {
@@ -42,6 +45,22 @@ void moveIntoPlace(const std::string& tmp, const std::string& target) {
   fileops::removeTree(old);
 }
 
+// Only an earlier time directory (a folder holding particles.vtp) or an empty
+// folder may be replaced: anything else of that name is the user's and stays.
+void checkReplaceable(const std::string& target) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(target, ec);
+  if (ec || !fs::exists(st)) return;
+  if (!fs::is_directory(st))
+    throw std::runtime_error("cannot write time directory '" + target +
+                             "': a file that is not a folder has that name; move it away");
+  if (!fileops::isRegularFile(target + "/particles.vtp") && !fs::is_empty(target, ec))
+    throw std::runtime_error("cannot write time directory '" + target +
+                             "': a folder of that name holds no particles.vtp, so it is not a time directory "
+                             "written by Shizuku; move it away");
+}
+
 }  // namespace
 
 template <int D>
@@ -51,6 +70,7 @@ void writeTimeDirectory(const std::string& caseDir, const std::string& timeName,
     throw std::runtime_error("cannot write time directory '" + caseDir + "/" + timeName +
                              "': '" + timeName + "' is not a time name");
   const std::string target = caseDir + "/" + timeName;
+  checkReplaceable(target);
   const std::string tmp = target + ".tmp-" + std::to_string(::getpid());
   fileops::removeTree(tmp);  // a leftover of this same process id
   fileops::makeDirectory(tmp);
@@ -68,7 +88,34 @@ void writeTimeDirectory(const std::string& caseDir, const std::string& timeName,
     throw;
   }
   fileops::syncPath(caseDir);
+  removeStaleTemporaries(caseDir);
   writePvd(caseDir);
+}
+
+std::vector<std::string> removeStaleTemporaries(const std::string& caseDir) {
+  std::vector<std::string> removed;
+  DIR* d = ::opendir(caseDir.c_str());
+  if (!d) return removed;
+  std::vector<std::string> stale;
+  while (dirent* e = ::readdir(d)) {
+    const std::string name = e->d_name;
+    std::size_t at = name.rfind(".tmp-");
+    if (at == std::string::npos) at = name.rfind(".old-");
+    if (at == std::string::npos || at == 0) continue;
+    const std::string digits = name.substr(at + 5);
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const long pid = std::stol(digits);
+    // Only leftovers of processes that no longer exist: another writer still
+    // running (or a reused pid) keeps its folder.
+    if (pid == long(::getpid()) || pid <= 0 || !(::kill(pid_t(pid), 0) != 0 && errno == ESRCH)) continue;
+    stale.push_back(name);
+  }
+  ::closedir(d);
+  for (const auto& name : stale) {
+    fileops::removeTree(caseDir + "/" + name);
+    removed.push_back(name);
+  }
+  return removed;
 }
 
 template <int D>

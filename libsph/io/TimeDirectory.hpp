@@ -7,7 +7,9 @@
 //
 // Writes are atomic: everything goes to <case>/<time>.tmp-<pid>/, is fsynced,
 // then swapped into place (rename, or an atomic exchange when <time> exists),
-// so a crash leaves either the old or the new directory, never half of one.
+// so a crash leaves either the old or the new directory, never half of one
+// (plus, after a SIGKILL, a *.tmp-<pid> leftover that is never listed and is
+// removed by the next successful write).
 // The pvd is rewritten through a temporary file and a rename as well.
 // Dictionary keys read: none (the solver passes writeFormat as `ascii`).
 #pragma once
@@ -29,6 +31,9 @@ struct TimeState {
 
 // Throws std::runtime_error naming the path and strerror on any failure; an
 // existing time directory of the same or any other name is then untouched.
+// An existing <time> is replaced only when it is an earlier time directory
+// (holds particles.vtp) or an empty folder: a file, or a folder holding
+// something else, is an error and stays as it is.
 template <int D>
 void writeTimeDirectory(const std::string& caseDir, const std::string& timeName,
                         const ParticleSet<D>& p, const TimeState& s, bool ascii);
@@ -42,6 +47,13 @@ ParticleSet<D> readTimeDirectory(const std::string& caseDir, const std::string& 
 // uniform/time), sorted by time; *.tmp-* folders are ignored. A missing case
 // folder has none.
 std::vector<std::pair<double, std::string>> listTimeDirectories(const std::string& caseDir);
+
+// Remove <name>.tmp-<pid> and <name>.old-<pid> entries of the case folder
+// left by writers that were killed (no process <pid> exists any more); a
+// running writer's entries stay. writeTimeDirectory calls it after each
+// successful write, so a restarted run sweeps what a SIGKILL left. Returns
+// the names removed.
+std::vector<std::string> removeStaleTemporaries(const std::string& caseDir);
 
 // Rebuild <case>/particles.pvd from listTimeDirectories (atomic replace).
 void writePvd(const std::string& caseDir);

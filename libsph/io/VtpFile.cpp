@@ -219,9 +219,14 @@ void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState&
 
   fileops::failurePoint("write vtp", path);
   vtkNew<vtkXMLPolyDataWriter> w;
-  vtkNew<MessageCapture> messages;
+  vtkNew<MessageCapture> messages, pipeline;
   w->AddObserver(vtkCommand::ErrorEvent, messages);
   w->AddObserver(vtkCommand::WarningEvent, messages);
+  // The pipeline repeats a failed write as a multi-line dump ("Algorithm ...
+  // returned failure for request: ..."): keep it off stderr; the writer's own
+  // message says what went wrong.
+  w->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, pipeline);
+  w->GetExecutive()->AddObserver(vtkCommand::WarningEvent, pipeline);
   w->SetFileName(path.c_str());
   w->SetInputData(pd);
   w->SetDataModeToAppended();

@@ -1,0 +1,88 @@
+// A time directory is never written over something that is not one
+// (TimeDirectory.hpp): a regular file or a non-empty folder without
+// particles.vtp at the time's path is an error naming the path, and stays
+// byte for byte; an empty folder or an earlier time directory is replaced.
+// Leftovers of killed writers (*.tmp-<pid>, *.old-<pid> of a dead pid) are
+// swept by the next successful write.
+#define BOOST_TEST_MODULE io_inTheWay
+#include <boost/test/unit_test.hpp>
+
+#include "io/TimeDirectory.hpp"
+#include "test_io_helpers.hpp"
+#include <fstream>
+#include <algorithm>
+#include <sstream>
+#include <unistd.h>
+
+using namespace shizuku;
+using namespace shizuku::iotest;
+namespace fs = std::filesystem;
+
+namespace {
+std::string slurpFile(const std::string& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+bool throwsNaming(const std::function<void()>& f, const std::string& part1, const std::string& part2) {
+  try {
+    f();
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    return m.find(part1) != std::string::npos && m.find(part2) != std::string::npos;
+  }
+  return false;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(regular_file_at_the_time_path_stays) {
+  ScratchDir c;
+  std::ofstream(c.path + "/0.5") << "my notes\n";
+  BOOST_TEST(throwsNaming([&] { writeTimeDirectory<2>(c.path, "0.5", randomSet<2>(5, false, 1), TimeState{0.5, 5, 0.1, 0.1, ""}, false); },
+                          c.path + "/0.5", "a file that is not a folder"));
+  BOOST_TEST(slurpFile(c.path + "/0.5") == "my notes\n");
+  BOOST_TEST(listTimeDirectories(c.path).empty());
+  for (const auto& e : fs::directory_iterator(c.path)) BOOST_TEST(e.path().filename() == "0.5");  // no tmp left
+}
+
+BOOST_AUTO_TEST_CASE(foreign_folder_at_the_time_path_stays) {
+  ScratchDir c;
+  fs::create_directories(c.path + "/1");
+  std::ofstream(c.path + "/1/data.csv") << "1,2,3\n";
+  BOOST_TEST(throwsNaming([&] { writeTimeDirectory<2>(c.path, "1", randomSet<2>(5, false, 1), TimeState{1, 5, 0.1, 0.1, ""}, false); },
+                          c.path + "/1", "holds no particles.vtp"));
+  BOOST_TEST(slurpFile(c.path + "/1/data.csv") == "1,2,3\n");
+}
+
+BOOST_AUTO_TEST_CASE(empty_folder_and_earlier_time_are_replaced) {
+  ScratchDir c;
+  fs::create_directories(c.path + "/2");
+  writeTimeDirectory<2>(c.path, "2", randomSet<2>(5, false, 1), TimeState{2, 5, 0.1, 0.1, ""}, false);
+  TimeState s;
+  BOOST_TEST(readTimeDirectory<2>(c.path, "2", s).size() == 5u);
+  writeTimeDirectory<2>(c.path, "2", randomSet<2>(8, false, 2), TimeState{2, 6, 0.1, 0.1, ""}, false);
+  BOOST_TEST(readTimeDirectory<2>(c.path, "2", s).size() == 8u);
+  BOOST_TEST(s.step == 6);
+}
+
+BOOST_AUTO_TEST_CASE(leftovers_of_dead_writers_are_swept_by_the_next_write) {
+  ScratchDir c;
+  // A pid that does not exist: above the kernel's pid_max (at most 2^22).
+  const std::string dead = "99999999";
+  fs::create_directories(c.path + "/0.2.tmp-" + dead + "/uniform");
+  std::ofstream(c.path + "/0.2.tmp-" + dead + "/particles.vtp") << "<?xml half";
+  std::ofstream(c.path + "/particles.pvd.tmp-" + dead) << "<?xml";
+  fs::create_directories(c.path + "/0.1.old-" + dead);
+  // Entries of a live process (this one's parent) and other names stay.
+  const std::string live = std::to_string(::getppid());
+  fs::create_directories(c.path + "/0.3.tmp-" + live);
+  fs::create_directories(c.path + "/notes.tmp-abc");
+  writeTimeDirectory<2>(c.path, "0", randomSet<2>(5, false, 1), TimeState{}, false);
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(c.path)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  BOOST_TEST(names == (std::vector<std::string>{"0", "0.3.tmp-" + live, "notes.tmp-abc", "particles.pvd"}),
+             boost::test_tools::per_element());
+  BOOST_TEST(removeStaleTemporaries(c.path).empty());
+}
