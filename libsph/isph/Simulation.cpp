@@ -38,8 +38,14 @@ Simulation<D>::Simulation(const std::string& caseDir, const SimulationOptions& o
   st_.ppeSolve = timers_.stage("ppeSolve");
   st_.corrector = timers_.stage("corrector");
   st_.advection = timers_.stage("advection");
+  // XSPH and each shifting term have a timer of their own (named after the effect).
+  effectTimer_.assign(effects_.size(), -1);
+  for (std::size_t k = 0; k < effects_.size(); ++k)
+    if (effects_[k]->stage() == EffectStage::advection) effectTimer_[k] = timers_.stage(effects_[k]->name());
   st_.ads = hasStage(EffectStage::postAdvection) ? timers_.stage("ads") : -1;
   st_.shifting = hasStage(EffectStage::shift) ? timers_.stage("shifting") : -1;
+  for (std::size_t k = 0; k < effects_.size(); ++k)
+    if (effects_[k]->stage() == EffectStage::shift) effectTimer_[k] = timers_.stage(effects_[k]->name());
   st_.functionObjects = timers_.stage("functionObjects");
   st_.output = timers_.stage("output");
   if (opt_.functionObjects && !opt_.postProcessing)
@@ -343,16 +349,19 @@ void Simulation<D>::correct() {
 
 template <int D>
 void Simulation<D>::advect() {
-  StageTimers::Scope t(timers_, st_.advection);
   auto& P = s_.particles;
   const long n = long(s_.size());
   const bool xsph = !du_.empty();
   if (xsph) {
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) du_[i].setZero();
-    for (auto& e : effects_)
-      if (e->stage() == EffectStage::advection) e->addAdvectionVelocity(s_, P.velocity, du_);
+    for (std::size_t k = 0; k < effects_.size(); ++k)
+      if (effects_[k]->stage() == EffectStage::advection) {
+        StageTimers::Scope t(timers_, effectTimer_[k]);
+        effects_[k]->addAdvectionVelocity(s_, P.velocity, du_);
+      }
   }
+  StageTimers::Scope t(timers_, st_.advection);
   const double dt = s_.dt;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
@@ -382,21 +391,28 @@ void Simulation<D>::stabilise() {
 template <int D>
 void Simulation<D>::shiftParticles() {
   if (dr_.empty()) return;
-  StageTimers::Scope t(timers_, st_.shifting);
   auto& P = s_.particles;
   const long n = long(s_.size());
-  // Velocity gradient of u^{n+1} for the Taylor correction (walls show the fluid's Shepard velocity).
-  if (taylorCorrection_) {
-    for (long i = 0; i < n; ++i) s_.uStar[i] = P.velocity[i];
-    shepardFluidVelocity(s_, s_.uStar);
-    Ops<D>::velocityGradient(s_.neighbours, s_.weights, s_.V(), s_.uStar, gradU_);
-  }
-  s_.refreshPairGeometry();
-  s_.computeDensity();
+  {
+    StageTimers::Scope t(timers_, st_.shifting);
+    // Velocity gradient of u^{n+1} for the Taylor correction (walls show the fluid's Shepard velocity).
+    if (taylorCorrection_) {
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) dr_[i].setZero();
-  for (auto& e : effects_)
-    if (e->stage() == EffectStage::shift) e->addShift(s_, dr_);
+      for (long i = 0; i < n; ++i) s_.uStar[i] = P.velocity[i];
+      shepardFluidVelocity(s_, s_.uStar);
+      Ops<D>::velocityGradient(s_.neighbours, s_.weights, s_.V(), s_.uStar, gradU_);
+    }
+    s_.refreshPairGeometry();
+    s_.computeDensity();
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) dr_[i].setZero();
+  }
+  for (std::size_t k = 0; k < effects_.size(); ++k)
+    if (effects_[k]->stage() == EffectStage::shift) {
+      StageTimers::Scope t(timers_, effectTimer_[k]);
+      effects_[k]->addShift(s_, dr_);
+    }
+  StageTimers::Scope t(timers_, st_.shifting);
   capShift(dr_, maxShift_ * s_.h);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {

@@ -101,6 +101,7 @@ class Simulation {
   std::unique_ptr<FreeSurfaceDetector<D>> freeSurface_;
   std::unique_ptr<PressureEquation<D>> ppe_;
   std::vector<std::unique_ptr<Effect<D>>> effects_;
+  std::vector<int> effectTimer_;   // per effect: its own timer, or -1 (timed with its stage)
   std::vector<std::unique_ptr<FunctionObject<D>>> functionObjects_;
   EffectNeeds needs_;
   double maxShift_ = 0.1;   // times h

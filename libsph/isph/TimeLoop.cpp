@@ -297,7 +297,7 @@ int Simulation<D>::run() {
            omp_get_max_threads(), " threads"));
   const double tsum = timers_.sumTotal();
   for (std::size_t k = 0; k < timers_.names().size(); ++k)
-    info(cat("  ", std::left, std::setw(16), timers_.names()[k], std::right, std::setw(10), std::fixed,
+    info(cat("  ", std::left, std::setw(26), timers_.names()[k], std::right, std::setw(10), std::fixed,
              std::setprecision(3), timers_.total()[k], " s  ", std::setw(5), std::setprecision(1),
              tsum > 0 ? 100 * timers_.total()[k] / tsum : 0.0, " %", std::defaultfloat));
   if (ppeFallbacks_ > 0) info(cat("PPE: the iterative solver fell back to a direct LU in ", ppeFallbacks_, " steps"));
