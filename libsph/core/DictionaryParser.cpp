@@ -245,6 +245,23 @@ class DictionaryParser {
  private:
   std::vector<Dictionary*> scope_;  // enclosing dictionaries, innermost last
   int includeDepth_ = 0;
+  // Bounds that keep a hostile or broken file from exhausting the stack or
+  // memory: nesting of { } and ( ), values made (macros copy), #includes.
+  static constexpr int kMaxNesting = 200;
+  static constexpr long kMaxValues = 500000;
+  static constexpr int kMaxIncludes = 1000;
+  int nesting_ = 0;
+  long values_ = 0;
+  int includes_ = 0;
+
+  void enter(const SourceLocation& at, const std::string& key) {
+    if (++nesting_ > kMaxNesting)
+      fail(at, key, "dictionaries and lists nested more than " + std::to_string(kMaxNesting) + " deep");
+  }
+  void countValue(const SourceLocation& at, const std::string& key) {
+    if (++values_ > kMaxValues)
+      fail(at, key, "more than " + std::to_string(kMaxValues) + " values (do macros copy each other over and over?)");
+  }
 
   [[noreturn]] static void fail(const SourceLocation& at, const std::string& key, const std::string& what) {
     throw InputError(at.str() + ": " + (key.empty() ? "" : "keyword '" + key + "': ") + what);
@@ -298,7 +315,9 @@ class DictionaryParser {
       sub->name_ = path;
       sub->where_ = keyTok.where;
       scope_.push_back(sub.get());
+      enter(open.where, key);
       parseBody(lex, *sub, &open, key);
+      --nesting_;
       scope_.pop_back();
       DictValue v;
       v.kind = DictValue::Kind::dict;
@@ -340,6 +359,7 @@ class DictionaryParser {
     DictValue v;
     v.where = t.where;
     v.text = t.text;
+    countValue(t.where, key);
     switch (t.type) {
       case Token::number:
         v.kind = DictValue::Kind::number;
@@ -352,6 +372,7 @@ class DictionaryParser {
       case Token::lparen: {
         v.kind = DictValue::Kind::list;
         v.text.clear();
+        enter(t.where, key);
         for (;;) {
           const Token p = lex.next();
           if (p.type == Token::rparen) break;
@@ -367,7 +388,9 @@ class DictionaryParser {
             sub->name_ = itemPath;
             sub->where_ = p.where;
             scope_.push_back(sub.get());
+            enter(p.where, key);
             parseBody(lex, *sub, &p, key);
+            --nesting_;
             scope_.pop_back();
             DictValue dv;
             dv.kind = DictValue::Kind::dict;
@@ -378,6 +401,7 @@ class DictionaryParser {
             v.items.push_back(value(lex, p, key, itemPath));
           }
         }
+        --nesting_;
         break;
       }
       case Token::macro: {
@@ -454,7 +478,7 @@ class DictionaryParser {
       v = &e->second;
     }
     markAllRead(*v);
-    return clone(*v, path);
+    return clone(*v, path, t.where, key);
   }
 
   [[noreturn]] static void notFound(const Token& t, const std::string& key, const std::string& part,
@@ -478,7 +502,8 @@ class DictionaryParser {
     for (const auto& item : v.items) markAllRead(item);
   }
 
-  static DictValue clone(const DictValue& v, const std::string& name) {
+  DictValue clone(const DictValue& v, const std::string& name, const SourceLocation& at, const std::string& key) {
+    countValue(at, key);
     DictValue c = v;
     if (v.kind == DictValue::Kind::dict) {
       auto d = std::make_shared<Dictionary>();
@@ -486,10 +511,10 @@ class DictionaryParser {
       d->where_ = v.dict->where_;
       d->order_ = v.dict->order_;
       d->keyLocation_ = v.dict->keyLocation_;
-      for (const auto& [k, e] : v.dict->entries_) d->entries_[k] = clone(e, name + "/" + k);
+      for (const auto& [k, e] : v.dict->entries_) d->entries_[k] = clone(e, name + "/" + k, at, key);
       c.dict = d;
     }
-    for (std::size_t i = 0; i < v.items.size(); ++i) c.items[i] = clone(v.items[i], name + "/" + std::to_string(i));
+    for (std::size_t i = 0; i < v.items.size(); ++i) c.items[i] = clone(v.items[i], name + "/" + std::to_string(i), at, key);
     return c;
   }
 
@@ -534,6 +559,8 @@ class DictionaryParser {
       if (optional) return;
       fail(t.where, "", "#include \"" + f.text + "\": cannot open file '" + resolved + "'");
     }
+    if (++includes_ > kMaxIncludes)
+      fail(t.where, "", "more than " + std::to_string(kMaxIncludes) + " #include directives in one dictionary");
     if (includeDepth_ >= 32)
       fail(t.where, "", "#include \"" + f.text + "\" nested more than 32 deep (does a file include itself?)");
     checkText(text, resolved);

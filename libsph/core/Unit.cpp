@@ -8,6 +8,7 @@
 #include "core/Dictionary.hpp"
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 
 namespace shizuku {
 
@@ -37,6 +38,14 @@ class UnitParser {
  private:
   const std::string& s_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
+  // Powers stay within +-kMaxPower after every step, so no int overflows.
+  static constexpr int kMaxPower = 99;
+
+  void checkPowers(const Unit& u) const {
+    if (std::abs(u.dim.M) > kMaxPower || std::abs(u.dim.L) > kMaxPower || std::abs(u.dim.T) > kMaxPower)
+      fail("powers of the units add up to more than " + std::to_string(kMaxPower));
+  }
 
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError("unit [" + s_ + "]: " + what);
@@ -58,16 +67,19 @@ class UnitParser {
         Unit d = factor();
         u.factor /= d.factor;
         u.dim = u.dim / d.dim;
+        checkPowers(u);
       } else if (pos_ < s_.size() && s_[pos_] == '*') {
         ++pos_;
         if (!atFactorStart()) fail("expected a unit after '*'");
         Unit m = factor();
         u.factor *= m.factor;
         u.dim = u.dim * m.dim;
+        checkPowers(u);
       } else if (atFactorStart()) {
         Unit m = factor();
         u.factor *= m.factor;
         u.dim = u.dim * m.dim;
+        checkPowers(u);
       } else {
         return u;
       }
@@ -80,7 +92,9 @@ class UnitParser {
     Unit u;
     if (s_[pos_] == '(') {
       ++pos_;
+      if (++depth_ > 16) fail("parentheses nested more than 16 deep");
       u = product();
+      --depth_;
       skipSpace();
       if (pos_ >= s_.size() || s_[pos_] != ')') fail("expected ')'");
       ++pos_;
@@ -116,10 +130,12 @@ class UnitParser {
       std::size_t b = pos_;
       while (pos_ < s_.size() && std::isdigit((unsigned char)s_[pos_])) ++pos_;
       if (b == pos_) fail("expected an integer power after '^'");
+      if (pos_ - b > 2) fail("power ^" + s_.substr(b, pos_ - b) + " is larger than " + std::to_string(kMaxPower));
       int n = std::stoi(s_.substr(b, pos_ - b));
       if (neg) n = -n;
       u.factor = std::pow(u.factor, n);
       u.dim = u.dim.pow(n);
+      checkPowers(u);
     }
     return u;
   }
