@@ -9,6 +9,7 @@
 // directories, particles.pvd and postProcessing/. Exit status: 0 success,
 // 1 bad input (message names file, line and keyword), 2 numerical failure
 // (after writing the last good state).
+#include "core/CommandLine.hpp"
 #include "core/Log.hpp"
 #include "isph/Simulation.hpp"
 #include <boost/program_options.hpp>
@@ -47,18 +48,9 @@ int main(int argc, char** argv) {
       ("noFunctionObjects", "run without function objects")
       ("threads", po::value<int>()->default_value(0), "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
   po::variables_map vm;
-  try {
-    const auto style = po::command_line_style::default_style | po::command_line_style::allow_long_disguise;
-    po::store(po::command_line_parser(argc, argv).options(desc).style(style).run(), vm);
-    po::notify(vm);
-  } catch (const std::exception& e) {
-    std::cerr << "shizuku: " << e.what() << "\n\n" << desc << "\n";
-    return 1;
-  }
-  if (vm.count("help")) {
-    std::cout << desc << "\nExit status: 0 success, 1 bad input, 2 numerical failure.\n";
-    return 0;
-  }
+  if (auto status = parseCommandLine(argc, argv, "shizuku", desc, vm,
+                                     "Exit status: 0 success, 1 bad input, 2 numerical failure.\n"))
+    return *status;
   const std::string dir = vm["case"].as<std::string>();
   if (vm["threads"].as<int>() > 0) omp_set_num_threads(vm["threads"].as<int>());
 

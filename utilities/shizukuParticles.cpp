@@ -6,6 +6,7 @@
 //
 // Reads and checks the whole case like `shizuku -dryRun` (exit 1 with file, line
 // and keyword on bad input); masses are calibrated as the solver does.
+#include "core/CommandLine.hpp"
 #include "core/Log.hpp"
 #include "io/TimeName.hpp"
 #include "isph/Simulation.hpp"
@@ -33,18 +34,7 @@ int main(int argc, char** argv) {
   desc.add_options()("help,h", "print this help and exit")(
       "case", po::value<std::string>()->default_value("."), "case directory");
   po::variables_map vm;
-  try {
-    const auto style = po::command_line_style::default_style | po::command_line_style::allow_long_disguise;
-    po::store(po::command_line_parser(argc, argv).options(desc).style(style).run(), vm);
-    po::notify(vm);
-  } catch (const std::exception& e) {
-    std::cerr << "shizukuParticles: " << e.what() << "\n\n" << desc << "\n";
-    return 1;
-  }
-  if (vm.count("help")) {
-    std::cout << desc << "\n";
-    return 0;
-  }
+  if (auto status = parseCommandLine(argc, argv, "shizukuParticles", desc, vm)) return *status;
   const std::string dir = vm["case"].as<std::string>();
   try {
     return caseDimension(dir) == 3 ? generate<3>(dir) : generate<2>(dir);

@@ -17,6 +17,7 @@
 // run or an earlier post-processing wrote it) the program stops unless
 // -overwrite is given. `timing` measures a live run: here it does nothing.
 // Exit status: 0 success, 1 bad input.
+#include "core/CommandLine.hpp"
 #include "core/Log.hpp"
 #include "functionObjects/FunctionObjectFactory.hpp"
 #include "functionObjects/TimeSelection.hpp"
@@ -110,19 +111,9 @@ int main(int argc, char** argv) {
       ("overwrite", "replace postProcessing/<func>/<first time>/ if it exists")
       ("threads", po::value<int>()->default_value(0), "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
   po::variables_map vm;
-  try {
-    const auto style = po::command_line_style::default_style | po::command_line_style::allow_long_disguise;
-    po::store(po::command_line_parser(argc, argv).options(desc).style(style).run(), vm);
-    po::notify(vm);
-    if (!vm.count("help") && !vm.count("func")) throw std::runtime_error("-func NAME is required");
-  } catch (const std::exception& e) {
-    std::cerr << "shizukuPostProcess: " << e.what() << "\n\n" << desc << "\n";
-    return 1;
-  }
-  if (vm.count("help")) {
-    std::cout << desc << "\nExit status: 0 success, 1 bad input.\n";
-    return 0;
-  }
+  if (auto status = parseCommandLine(argc, argv, "shizukuPostProcess", desc, vm,
+                                     "Exit status: 0 success, 1 bad input.\n", "func"))
+    return *status;
   if (vm["threads"].as<int>() > 0) omp_set_num_threads(vm["threads"].as<int>());
   const std::string dir = vm["case"].as<std::string>();
   try {
