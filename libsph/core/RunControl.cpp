@@ -19,6 +19,7 @@ RunControl RunControl::read(const Dictionary& d) {
   rc.maxCo = d.getScalarOr("maxCo", 0.2, dim::none);
   if (!(rc.maxCo > 0)) d.error("maxCo", "must be > 0");
   rc.maxDeltaT = d.getScalarOr("maxDeltaT", 1e300, dim::time);
+  if (!(rc.maxDeltaT > 0)) d.error("maxDeltaT", "must be > 0");
   const std::string wc = d.getOptionOr("writeControl", {"timeStep", "runTime", "adjustableRunTime"}, "timeStep");
   rc.writeControl = wc == "timeStep" ? WriteControl::timeStep
                     : wc == "runTime" ? WriteControl::runTime : WriteControl::adjustableRunTime;
