@@ -1,11 +1,15 @@
 // Sparse linear solvers for the pressure Poisson equation behind one
-// interface (design.md part 2), chosen in system/sphSolution:
+// interface (design.md part 2, methods.md 4.2), chosen in system/sphSolution:
 //   pressure { solver BiCGSTAB|UMFPACK|KLU|SparseLU; tolerance 1e-8; maxIterations 2000;
-//              preconditioner ILUT|diagonal; dropTolerance 1e-4; fillFactor 10; }
-// BiCGSTAB is warm-started from the x it is given (the last pressure).
+//              preconditioner ILU0|ILUT|diagonal; blocks 0; dropTolerance 1e-4; fillFactor 10;
+//              reuseSymbolic yes; }
+// BiCGSTAB is warm-started from the x it is given (the last pressure). Every
+// backend keeps its buffers between calls (see the .cpp files for what each
+// external library still allocates inside).
 #pragma once
 #include "core/Dictionary.hpp"
 #include <Eigen/Sparse>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -31,6 +35,13 @@ class LinearSolver {
   // Build from the `pressure` sub-dictionary of system/sphSolution (nullptr: defaults).
   static std::unique_ptr<LinearSolver> create(const Dictionary* dict);
   static std::vector<std::string> names();
+  static std::vector<std::string> preconditionerNames();
+  // Benchmarks and tests only: when set, create() returns hook(dict) instead (e.g. a
+  // solver that records the systems it is given). An empty function restores the factory.
+  using CreateHook = std::function<std::unique_ptr<LinearSolver>(const Dictionary*)>;
+  static void setCreateHook(CreateHook hook);
+  // The backends themselves (what create() returns without a hook).
+  static std::unique_ptr<LinearSolver> createBuiltin(const Dictionary* dict);
 };
 
 double relativeResidual(const SparseMatrixR& A, const Eigen::VectorXd& b, const Eigen::VectorXd& x);

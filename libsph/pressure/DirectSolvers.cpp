@@ -1,0 +1,173 @@
+// Direct sparse LU backends for the PPE (methods.md 4.2: "a direct SparseLU or
+// UMFPACK is also cheap and the most robust" at 2D test sizes).
+// KLU and UMFPACK are called through their C interfaces: the row-major (CSR)
+// matrix A is, read as compressed columns, the matrix A^T, which they factor;
+// the transposed solve (klu_tsolve, UMFPACK_At) then gives A x = b with no copy.
+// The symbolic analysis (fill-reducing ordering) is kept while the sparsity
+// pattern equals the last one (checked entry by entry; particles that gain or
+// lose a neighbour change it, so in a flowing case it is redone most steps).
+// SparseLU (Eigen, COLAMD ordering) works on a column-major copy.
+#include "core/Log.hpp"
+#include "pressure/Krylov.hpp"
+#include "pressure/SolverBackends.hpp"
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <klu.h>
+#include <umfpack.h>
+
+namespace shizuku {
+
+namespace {
+
+// Remembers the pattern of the last matrix; same() compares without allocating
+// once the buffers have their capacity.
+class PatternMemo {
+ public:
+  bool same(const SparseMatrixR& A) const {
+    const int n = int(A.rows());
+    if (n + 1 != int(outer_.size())) return false;
+    const int nnz = A.outerIndexPtr()[n];
+    if (nnz != int(inner_.size())) return false;
+    return std::equal(outer_.begin(), outer_.end(), A.outerIndexPtr()) &&
+           std::equal(inner_.begin(), inner_.end(), A.innerIndexPtr());
+  }
+  void remember(const SparseMatrixR& A) {
+    const int n = int(A.rows());
+    outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + n + 1);
+    inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.outerIndexPtr()[n]);
+  }
+  void forget() { outer_.clear(); inner_.clear(); }
+
+ private:
+  std::vector<int> outer_, inner_;
+};
+
+LinearSolveResult finish(const std::string& name, const SparseMatrixR& A, const Eigen::VectorXd& b,
+                         const Eigen::VectorXd& x, bool solved) {
+  LinearSolveResult r;
+  r.iterations = 1;
+  r.residual = relativeResidual(A, b.data(), x.data());
+  r.ok = solved && std::isfinite(r.residual) && r.residual < 1e-6;
+  if (!r.ok) r.message = cat(name, " solve failed, residual ", r.residual);
+  return r;
+}
+
+class KLUSolver final : public LinearSolver {
+ public:
+  explicit KLUSolver(bool reuse) : reuse_(reuse) { klu_defaults(&common_); }
+  ~KLUSolver() override { release(); }
+  std::string name() const override { return "KLU"; }
+  std::string describe() const override {
+    return cat("KLU (direct sparse LU", reuse_ ? ", symbolic analysis kept while the pattern is unchanged" : "", ")");
+  }
+  LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+    const int n = int(A.rows());
+    int* Ap = const_cast<int*>(A.outerIndexPtr());
+    int* Ai = const_cast<int*>(A.innerIndexPtr());
+    double* Ax = const_cast<double*>(A.valuePtr());
+    if (numeric_) klu_free_numeric(&numeric_, &common_);
+    if (!(reuse_ && symbolic_ && memo_.same(A))) {
+      if (symbolic_) klu_free_symbolic(&symbolic_, &common_);
+      symbolic_ = klu_analyze(n, Ap, Ai, &common_);
+      if (reuse_) memo_.remember(A);
+      ++analyses_;
+    }
+    LinearSolveResult r;
+    if (!symbolic_) { memo_.forget(); r.message = "KLU analysis failed"; return r; }
+    numeric_ = klu_factor(Ap, Ai, Ax, symbolic_, &common_);
+    if (!numeric_) { r.message = "KLU factorisation failed (singular matrix?)"; return r; }
+    x = b;
+    const bool ok = klu_tsolve(symbolic_, numeric_, n, 1, x.data(), &common_) == 1;
+    return finish("KLU", A, b, x, ok);
+  }
+
+ private:
+  void release() {
+    if (numeric_) klu_free_numeric(&numeric_, &common_);
+    if (symbolic_) klu_free_symbolic(&symbolic_, &common_);
+  }
+  bool reuse_;
+  long analyses_ = 0;
+  klu_common common_;
+  klu_symbolic* symbolic_ = nullptr;
+  klu_numeric* numeric_ = nullptr;
+  PatternMemo memo_;
+};
+
+class UMFPACKSolver final : public LinearSolver {
+ public:
+  explicit UMFPACKSolver(bool reuse) : reuse_(reuse) { umfpack_di_defaults(control_); }
+  ~UMFPACKSolver() override {
+    if (numeric_) umfpack_di_free_numeric(&numeric_);
+    if (symbolic_) umfpack_di_free_symbolic(&symbolic_);
+  }
+  std::string name() const override { return "UMFPACK"; }
+  std::string describe() const override {
+    return cat("UMFPACK (direct sparse LU", reuse_ ? ", symbolic analysis kept while the pattern is unchanged" : "",
+               ")");
+  }
+  LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+    const int n = int(A.rows());
+    const int* Ap = A.outerIndexPtr();
+    const int* Ai = A.innerIndexPtr();
+    const double* Ax = A.valuePtr();
+    if (numeric_) umfpack_di_free_numeric(&numeric_);
+    LinearSolveResult r;
+    if (!(reuse_ && symbolic_ && memo_.same(A))) {
+      if (symbolic_) umfpack_di_free_symbolic(&symbolic_);
+      if (umfpack_di_symbolic(n, n, Ap, Ai, Ax, &symbolic_, control_, info_) != UMFPACK_OK) {
+        symbolic_ = nullptr;
+        memo_.forget();
+        r.message = "UMFPACK analysis failed";
+        return r;
+      }
+      if (reuse_) memo_.remember(A);
+    }
+    if (umfpack_di_numeric(Ap, Ai, Ax, symbolic_, &numeric_, control_, info_) != UMFPACK_OK) {
+      if (numeric_) umfpack_di_free_numeric(&numeric_);
+      r.message = "UMFPACK factorisation failed (singular matrix?)";
+      return r;
+    }
+    x.resize(n);
+    const bool ok = umfpack_di_solve(UMFPACK_At, Ap, Ai, Ax, x.data(), b.data(), numeric_, control_, info_) == UMFPACK_OK;
+    return finish("UMFPACK", A, b, x, ok);
+  }
+
+ private:
+  bool reuse_;
+  double control_[UMFPACK_CONTROL];
+  double info_[UMFPACK_INFO];
+  void* symbolic_ = nullptr;
+  void* numeric_ = nullptr;
+  PatternMemo memo_;
+};
+
+class SparseLUSolver final : public LinearSolver {
+ public:
+  std::string name() const override { return "SparseLU"; }
+  std::string describe() const override { return "SparseLU (Eigen direct sparse LU, COLAMD ordering)"; }
+  LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+    colMajor_ = A;
+    colMajor_.makeCompressed();
+    lu_.compute(colMajor_);
+    if (lu_.info() != Eigen::Success) {
+      LinearSolveResult r;
+      r.message = "SparseLU factorisation failed (singular matrix?)";
+      return r;
+    }
+    x = lu_.solve(b);
+    return finish("SparseLU", A, b, x, lu_.info() == Eigen::Success);
+  }
+
+ private:
+  Eigen::SparseMatrix<double, Eigen::ColMajor, int> colMajor_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double, Eigen::ColMajor, int>, Eigen::COLAMDOrdering<int>> lu_;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> makeKLU(bool reuseSymbolic) { return std::make_unique<KLUSolver>(reuseSymbolic); }
+std::unique_ptr<LinearSolver> makeUMFPACK(bool reuseSymbolic) { return std::make_unique<UMFPACKSolver>(reuseSymbolic); }
+std::unique_ptr<LinearSolver> makeSparseLU() { return std::make_unique<SparseLUSolver>(); }
+
+}  // namespace shizuku

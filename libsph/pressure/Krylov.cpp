@@ -1,0 +1,167 @@
+// Preconditioned BiCGSTAB, OpenMP parallel (see Krylov.hpp). Per iteration:
+//   p = r + beta (p - omega v);  y = M^-1 p;  v = A y;        alpha = rho / (r0, v)
+//   s = r - alpha v;  (stop with x += alpha y if ||s|| is small)
+//   z = M^-1 s;  t = A z;  omega = (t, s) / (t, t)
+//   x += alpha y + omega z;  r = s - omega t;  rho' = (r0, r)
+// A vanishing rho (r orthogonal to the shadow residual) restarts with r0 = r.
+#include "pressure/Krylov.hpp"
+#include <cmath>
+
+namespace shizuku {
+
+void KrylovWorkspace::resize(int n) {
+  for (auto* v : {&r, &r0, &p, &v, &s, &t, &y, &z}) v->resize(n);
+}
+
+void multiply(const SparseMatrixR& A, const double* x, double* y) {
+  const int n = int(A.rows());
+  const int* outer = A.outerIndexPtr();
+  const int* col = A.innerIndexPtr();
+  const double* val = A.valuePtr();
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int p = outer[i]; p < outer[i + 1]; ++p) s += val[p] * x[col[p]];
+    y[i] = s;
+  }
+}
+
+double relativeResidual(const SparseMatrixR& A, const double* b, const double* x) {
+  const int n = int(A.rows());
+  const int* outer = A.outerIndexPtr();
+  const int* col = A.innerIndexPtr();
+  const double* val = A.valuePtr();
+  double rr = 0, bb = 0;
+#pragma omp parallel for schedule(static) reduction(+ : rr, bb)
+  for (int i = 0; i < n; ++i) {
+    double s = -b[i];
+    for (int p = outer[i]; p < outer[i + 1]; ++p) s += val[p] * x[col[p]];
+    rr += s * s;
+    bb += b[i] * b[i];
+  }
+  return bb > 0 ? std::sqrt(rr / bb) : std::sqrt(rr);
+}
+
+namespace {
+// y = A x and returns (a, y).
+double multiplyDot(const SparseMatrixR& A, const double* x, double* y, const double* a) {
+  const int n = int(A.rows());
+  const int* outer = A.outerIndexPtr();
+  const int* col = A.innerIndexPtr();
+  const double* val = A.valuePtr();
+  double d = 0;
+#pragma omp parallel for schedule(static) reduction(+ : d)
+  for (int i = 0; i < n; ++i) {
+    double s = 0;
+    for (int p = outer[i]; p < outer[i + 1]; ++p) s += val[p] * x[col[p]];
+    y[i] = s;
+    d += a[i] * s;
+  }
+  return d;
+}
+}  // namespace
+
+KrylovResult bicgstab(const SparseMatrixR& A, const double* b, double* x, const Preconditioner& M,
+                      double tolerance, int maxIterations, KrylovWorkspace& w) {
+  KrylovResult res;
+  const int n = int(A.rows());
+  w.resize(n);
+  double* r = w.r.data();
+  double* r0 = w.r0.data();
+  double* p = w.p.data();
+  double* v = w.v.data();
+  double* s = w.s.data();
+  double* t = w.t.data();
+  double* y = w.y.data();
+  double* z = w.z.data();
+
+  // r = b - A x, r0 = r, p = v = 0.
+  multiply(A, x, v);
+  double bb = 0, rr = 0;
+#pragma omp parallel for schedule(static) reduction(+ : bb, rr)
+  for (int i = 0; i < n; ++i) {
+    r[i] = b[i] - v[i];
+    r0[i] = r[i];
+    p[i] = 0;
+    v[i] = 0;
+    bb += b[i] * b[i];
+    rr += r[i] * r[i];
+  }
+  if (bb == 0) {
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) x[i] = 0;
+    res.converged = true;
+    return res;
+  }
+  const double target2 = tolerance * tolerance * bb;
+  res.residual = std::sqrt(rr / bb);
+  if (rr <= target2) { res.converged = true; return res; }
+  double rho = 1, alpha = 1, omega = 1, rhoNew = rr, r0norm2 = rr;
+  int restarts = 0;
+  for (int it = 0; it < maxIterations; ++it) {
+    res.iterations = it + 1;
+    // Restart when r has become (nearly) orthogonal to the shadow residual.
+    if (std::abs(rhoNew) < 1e-30 * r0norm2) {
+      if (++restarts > 10) { res.breakdown = true; return res; }
+      rr = 0;
+#pragma omp parallel for schedule(static) reduction(+ : rr)
+      for (int i = 0; i < n; ++i) { r0[i] = r[i]; p[i] = 0; v[i] = 0; rr += r[i] * r[i]; }
+      rhoNew = r0norm2 = rr;
+      rho = alpha = omega = 1;
+    }
+    const double beta = (rhoNew / rho) * (alpha / omega);
+    rho = rhoNew;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) p[i] = r[i] + beta * (p[i] - omega * v[i]);
+    M.apply(p, y);
+    const double r0v = multiplyDot(A, y, v, r0);
+    if (r0v == 0 || !std::isfinite(r0v)) { res.breakdown = true; return res; }
+    alpha = rho / r0v;
+    double ss = 0;
+#pragma omp parallel for schedule(static) reduction(+ : ss)
+    for (int i = 0; i < n; ++i) {
+      s[i] = r[i] - alpha * v[i];
+      ss += s[i] * s[i];
+    }
+    if (ss <= target2) {
+#pragma omp parallel for schedule(static)
+      for (int i = 0; i < n; ++i) x[i] += alpha * y[i];
+      res.residual = std::sqrt(ss / bb);
+      res.converged = true;
+      return res;
+    }
+    M.apply(s, z);
+    double ts = 0, tt = 0;
+    {
+      const int* outer = A.outerIndexPtr();
+      const int* col = A.innerIndexPtr();
+      const double* val = A.valuePtr();
+#pragma omp parallel for schedule(static) reduction(+ : ts, tt)
+      for (int i = 0; i < n; ++i) {
+        double sum = 0;
+        for (int q = outer[i]; q < outer[i + 1]; ++q) sum += val[q] * z[col[q]];
+        t[i] = sum;
+        ts += sum * s[i];
+        tt += sum * sum;
+      }
+    }
+    if (tt == 0 || !std::isfinite(tt)) { res.breakdown = true; return res; }
+    omega = ts / tt;
+    if (omega == 0) { res.breakdown = true; return res; }
+    rr = 0;
+    rhoNew = 0;
+#pragma omp parallel for schedule(static) reduction(+ : rr, rhoNew)
+    for (int i = 0; i < n; ++i) {
+      x[i] += alpha * y[i] + omega * z[i];
+      r[i] = s[i] - omega * t[i];
+      rr += r[i] * r[i];
+      rhoNew += r0[i] * r[i];
+    }
+    res.residual = std::sqrt(rr / bb);
+    if (!std::isfinite(rr)) { res.breakdown = true; return res; }
+    if (rr <= target2) { res.converged = true; return res; }
+  }
+  return res;
+}
+
+}  // namespace shizuku

@@ -1,0 +1,28 @@
+// Constructors of the LinearSolver backends (internal to libsph/pressure; the
+// factory LinearSolver::create in LinearSolver.cpp reads the dictionary and calls these).
+//   iterative: OpenMP BiCGSTAB (Krylov.hpp) with a Preconditioner, warm start,
+//              direct SparseLU fallback when it fails (IterativeSolver.cpp)
+//   direct:    KLU and UMFPACK through their C interfaces, reading the row-major
+//              matrix as the column-major storage of A^T and solving with the
+//              transposed system (no copy); the symbolic analysis is kept while
+//              the sparsity pattern is unchanged; Eigen SparseLU (DirectSolvers.cpp)
+#pragma once
+#include "pressure/LinearSolver.hpp"
+#include "pressure/Preconditioner.hpp"
+
+namespace shizuku {
+
+struct IterativeSettings {
+  double tolerance = 1e-8;
+  int maxIterations = 2000;
+};
+
+std::unique_ptr<LinearSolver> makeBiCGSTAB(const IterativeSettings& s, std::unique_ptr<Preconditioner> pc);
+std::unique_ptr<LinearSolver> makeKLU(bool reuseSymbolic);
+std::unique_ptr<LinearSolver> makeUMFPACK(bool reuseSymbolic);
+std::unique_ptr<LinearSolver> makeSparseLU();
+
+// Eigen's IncompleteLUT (dual threshold ILU) as a Preconditioner.
+std::unique_ptr<Preconditioner> makeILUT(double dropTolerance, int fillFactor);
+
+}  // namespace shizuku
