@@ -60,6 +60,8 @@ class Simulation {
   const FlowState<D>& state() const { return s_; }
   const CaseFiles& files() const { return files_; }
   const RunControl& runControl() const { return rc_; }
+  const StageTimers& timers() const { return timers_; }
+  const std::vector<std::unique_ptr<Effect<D>>>& effects() const { return effects_; }
   std::vector<std::unique_ptr<FunctionObject<D>>>& functionObjects() { return functionObjects_; }
   // One whole time step of size dt (stages 5-10), then time += dt.
   void step(double dt);
