@@ -6,7 +6,7 @@
 // real run) with the case's own sphSolution; systems of steps > warmup are kept.
 // Usage:
 //   bench_pressure CASE WARMUP RECORD OUT.csv THREADS(1,2) PASSES LABEL=DICT [LABEL=DICT ...]
-//   e.g. "ILU0=solver BiCGSTAB; preconditioner ILU0;"  "KLU=solver KLU;"  "AMG=hypre yes; reuse 1;"
+//   e.g. "ILU0=solver BiCGSTAB; preconditioner ILU0;"  "KLU=solver KLU;"  "AMG=solver BiCGSTAB; preconditioner AMG; amgReuse 1;"
 // Appends one CSV row per (label, threads): case,unknowns,nnz,label,threads,
 // wallMs,cpuMs,iterations,maxResidual,failures.
 #include "core/Log.hpp"
@@ -18,9 +18,6 @@
 #include <fstream>
 #include <omp.h>
 #include <sstream>
-#ifdef SHIZUKU_BENCH_HYPRE
-#include "HypreSolver.hpp"
-#endif
 
 using namespace shizuku;
 
@@ -98,19 +95,7 @@ int main(int argc, char** argv) {
     const Dictionary dict = Dictionary::fromString(spec.substr(eq + 1), label);
     for (int T : threads) {
       omp_set_num_threads(T);
-      std::unique_ptr<LinearSolver> solver;
-      if (dict.found("hypre")) {
-#ifdef SHIZUKU_BENCH_HYPRE
-        solver = std::make_unique<HypreAMGSolver>(dict.getScalarOr("tolerance", 1e-8, dim::none), 2000,
-                                                  dict.getIntOr("reuse", 1));
-        dict.markRead("hypre");
-#else
-        std::printf("%s: hypre not available in this build\n", label.c_str());
-        break;
-#endif
-      } else {
-        solver = LinearSolver::createBuiltin(&dict);
-      }
+      auto solver = LinearSolver::createBuiltin(&dict);
       std::vector<double> best(recorded.size(), 1e300);
       double cpu = 0, its = 0, maxRes = 0;
       long failures = 0;

@@ -67,9 +67,11 @@ class BiCGSTABSolver final : public LinearSolver {
       if (!r.ok)
         r.message = cat("BiCGSTAB did not converge: ", r.iterations, " iterations, residual ", r.residual);
     }
+    pc_->solved(r.iterations);
     if (!r.ok) fallback(A, b, x, r);
     return r;
   }
+  void numberingChanged() override { pc_->numberingChanged(); }
 
  private:
   // BiCGSTAB can stagnate or break down; a direct LU solves this step rather

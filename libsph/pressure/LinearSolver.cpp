@@ -1,12 +1,14 @@
 // The linear-solver factory: reads the `pressure` sub-dictionary of
 // system/sphSolution (design.md part 2, methods.md 4.2) and builds a backend:
 //   solver          BiCGSTAB | UMFPACK | KLU | SparseLU        (default BiCGSTAB)
-//   preconditioner  ILU0 | ILUT | diagonal                     (BiCGSTAB; default ILU0)
+//   preconditioner  ILU0 | ILUT | diagonal | AMG               (BiCGSTAB; default AMG when
+//                                                              built with hypre, else ILU0)
+//   amgReuse 10                                                (AMG: steps a hierarchy is kept)
 //   tolerance 1e-8; maxIterations 2000;                        (BiCGSTAB)
 //   blocks N                                                   (ILU0; default: one per thread)
 //   dropTolerance 1e-4; fillFactor 10;                         (ILUT)
 //   reuseSymbolic yes                                          (KLU, UMFPACK)
-// The default (BiCGSTAB + block ILU(0)) was chosen by measurement: docs/performance.md.
+// The default was chosen by measurement: docs/performance.md.
 #include "pressure/LinearSolver.hpp"
 #include "pressure/Krylov.hpp"
 #include "pressure/SolverBackends.hpp"
@@ -19,7 +21,7 @@ double relativeResidual(const SparseMatrixR& A, const Eigen::VectorXd& b, const 
 
 std::vector<std::string> LinearSolver::names() { return {"BiCGSTAB", "UMFPACK", "KLU", "SparseLU"}; }
 
-std::vector<std::string> LinearSolver::preconditionerNames() { return {"ILU0", "ILUT", "diagonal"}; }
+std::vector<std::string> LinearSolver::preconditionerNames() { return {"ILU0", "ILUT", "diagonal", "AMG"}; }
 
 namespace {
 LinearSolver::CreateHook& createHook() {
@@ -40,7 +42,7 @@ std::unique_ptr<LinearSolver> LinearSolver::createBuiltin(const Dictionary* d) {
   if (d) {
     // Settings of the other family do not apply: accepted and ignored.
     const std::vector<const char*> iterKeys = {"tolerance", "maxIterations", "preconditioner", "blocks",
-                                               "dropTolerance", "fillFactor"};
+                                               "dropTolerance", "fillFactor", "amgReuse"};
     if (!iterative) for (const char* k : iterKeys) d->markRead(k);
     else d->markRead("reuseSymbolic");
   }
@@ -55,7 +57,11 @@ std::unique_ptr<LinearSolver> LinearSolver::createBuiltin(const Dictionary* d) {
   s.maxIterations = d ? d->getIntOr("maxIterations", 2000) : 2000;
   if (d && !(s.tolerance > 0)) d->error("tolerance", "must be > 0");
   if (d && s.maxIterations <= 0) d->error("maxIterations", "must be > 0");
-  const std::string pc = d ? d->getOptionOr("preconditioner", preconditionerNames(), "ILU0") : "ILU0";
+  const std::string def = hypreAvailable() ? "AMG" : "ILU0";
+  const std::string pc = d ? d->getOptionOr("preconditioner", preconditionerNames(), def) : def;
+  // Keys of the other preconditioners are accepted and ignored.
+  if (d)
+    for (const char* k : {"blocks", "dropTolerance", "fillFactor", "amgReuse"}) d->markRead(k);
   std::unique_ptr<Preconditioner> p;
   if (pc == "ILUT") {
     const double drop = d ? d->getScalarOr("dropTolerance", 1e-4, dim::none) : 1e-4;
@@ -63,16 +69,18 @@ std::unique_ptr<LinearSolver> LinearSolver::createBuiltin(const Dictionary* d) {
     if (d && !(drop >= 0)) d->error("dropTolerance", "must be >= 0");
     if (d && fill <= 0) d->error("fillFactor", "must be > 0");
     p = makeILUT(drop, fill);
+  } else if (pc == "diagonal") {
+    p = std::make_unique<DiagonalPreconditioner>();
+  } else if (pc == "AMG") {
+    if (!hypreAvailable())
+      d->error("preconditioner", "AMG needs hypre: install the Debian package libhypre-dev and rebuild (or use ILU0)");
+    const int reuse = d ? d->getIntOr("amgReuse", 10) : 10;
+    if (d && reuse < 1) d->error("amgReuse", "must be >= 1 (1: a new hierarchy every step)");
+    p = makeHypreAMG(reuse);
   } else {
-    if (d) { d->markRead("dropTolerance"); d->markRead("fillFactor"); }
-    if (pc == "diagonal") p = std::make_unique<DiagonalPreconditioner>();
-  }
-  if (pc == "ILU0") {
     const int blocks = d ? d->getIntOr("blocks", 0) : 0;
     if (d && blocks < 0) d->error("blocks", "must be >= 0 (0: one block per thread)");
     p = std::make_unique<BlockILU0>(blocks);
-  } else if (d) {
-    d->markRead("blocks");
   }
   return makeBiCGSTAB(s, std::move(p));
 }

@@ -32,6 +32,9 @@ class LinearSolver {
   virtual std::string describe() const = 0;
   // Solve A x = b; x holds the initial guess on entry (iterative solvers).
   virtual LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
+  // The unknowns were renumbered (particles reordered): state kept from earlier
+  // matrices (a lagged preconditioner) must be rebuilt.
+  virtual void numberingChanged() {}
   // Build from the `pressure` sub-dictionary of system/sphSolution (nullptr: defaults).
   static std::unique_ptr<LinearSolver> create(const Dictionary* dict);
   static std::vector<std::string> names();

@@ -9,6 +9,7 @@
 //             dropped. Particles (hence unknowns) are ordered by cell, so a
 //             block is a compact piece of the domain and the dropped couplings
 //             are few; with one thread it is the plain ILU(0).
+// (AMG: HypreAMG.cpp; ILUT: Eigen's IncompleteLUT, IterativeSolver.cpp.)
 // Dictionary keys (read by LinearSolver::create): preconditioner ILU0|ILUT|diagonal|AMG;
 // blocks (ILU0: number of row blocks, default = threads).
 #pragma once
@@ -29,6 +30,10 @@ class Preconditioner {
   virtual bool setup(const SparseMatrixR& A) = 0;
   // z = M^{-1} r over all rows (called from outside a parallel region; parallel inside).
   virtual void apply(const double* r, double* z) const = 0;
+  // Preconditioners kept across steps (AMG): the rows were renumbered; and the
+  // iteration count of the solve that just used it.
+  virtual void numberingChanged() {}
+  virtual void solved(int iterations) {}
 };
 
 class DiagonalPreconditioner final : public Preconditioner {

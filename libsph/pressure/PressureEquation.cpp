@@ -1,6 +1,7 @@
 // PPE assembly and solve, methods.md 4.2 and 11 (option A).
 #include "pressure/PressureEquation.hpp"
 #include "boundaries/WallParticles.hpp"
+#include <algorithm>
 
 namespace shizuku {
 
@@ -11,57 +12,72 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
   const long n = long(s.size());
   const double V = s.V();
   unknown_.resize(n);
+  rowStart_.resize(n + 1);
 
-  // 1. Which particles are unknowns, and how many entries each row has.
-  bool anyDirichlet = false;
+  // 1. Which particles are unknowns (fluid not on the free surface; walls with a
+  //    fluid neighbour), and how many entries each row has.
+  long anyDirichlet = 0, m = 0;
+#pragma omp parallel for schedule(static) reduction(+ : anyDirichlet, m)
   for (long i = 0; i < n; ++i) {
     bool isUnknown;
     if (s.isFluid(i)) {
       const auto c = P.surfaceClass(i);
       isUnknown = !(c == SurfaceClass::free || c == SurfaceClass::splash);
-      anyDirichlet |= !isUnknown;
+      anyDirichlet += !isUnknown;
     } else {
       isUnknown = false;
       for (Index k = nl.begin(i); k < nl.end(i); ++k)
         if (s.isFluid(nl.j[k])) { isUnknown = true; break; }
     }
-    unknown_[i] = isUnknown ? 1 : -1;
+    unknown_[i] = isUnknown;
+    m += isUnknown;
   }
-  Index m = 0;
-  rowParticle_.clear();
-  for (long i = 0; i < n; ++i)
-    if (unknown_[i] >= 0) { unknown_[i] = m++; rowParticle_.push_back(Index(i)); }
-  rowStart_.resize(m + 1);
-  rowStart_[0] = 0;
-  for (Index r = 0; r < m; ++r) {
-    const Index i = rowParticle_[r];
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
     Index c = 1;  // diagonal
-    for (Index k = nl.begin(i); k < nl.end(i); ++k) {
-      const Index j = nl.j[k];
-      if (unknown_[j] < 0) continue;
-      if (!s.isFluid(i) && !s.isFluid(j)) continue;  // wall rows couple to fluid only
-      ++c;
-    }
-    rowStart_[r + 1] = rowStart_[r] + c;
+    if (unknown_[i])
+      for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+        const Index j = nl.j[k];
+        if (!unknown_[j]) continue;
+        if (!s.isFluid(i) && !s.isFluid(j)) continue;  // wall rows couple to fluid only
+        ++c;
+      }
+    rowStart_[i + 1] = c;
+  }
+  rowStart_[0] = 0;
+  for (long i = 0; i < n; ++i) rowStart_[i + 1] += rowStart_[i];
+  numUnknowns_ = m;
+
+  // The particle order changed (cell reordering): a preconditioner kept from an
+  // earlier step no longer matches the rows.
+  if (ids_.size() != P.id.size() || !std::equal(ids_.begin(), ids_.end(), P.id.begin())) {
+    ids_ = P.id;
+    solver_->numberingChanged();
   }
 
-  // 2. Fill the compressed rows (columns ascending: unknown ids follow particle order,
-  //    and each neighbour row is sorted by j).
-  A_.resize(m, m);
-  A_.resizeNonZeros(rowStart_[m]);
-  b_.resize(m);
+  // 2. Fill the compressed rows (columns ascending: each neighbour row is sorted by j).
+  //    Storage grows with 25 % headroom, so the changing number of pairs does not
+  //    reallocate every step.
+  A_.resize(n, n);
+  A_.data().resize(rowStart_[n], 0.25);
+  b_.resize(n);
   std::copy(rowStart_.begin(), rowStart_.end(), A_.outerIndexPtr());
   int* col = A_.innerIndexPtr();
   double* val = A_.valuePtr();
-  pinned_ = !anyDirichlet && m > 0;
+  pinned_ = anyDirichlet == 0 && m > 0;
   long fallbacks = 0;
 #pragma omp parallel for schedule(static) reduction(+ : fallbacks)
-  for (Index r = 0; r < m; ++r) {
-    const Index i = rowParticle_[r];
-    Index pos = rowStart_[r];
+  for (long i = 0; i < n; ++i) {
+    Index pos = rowStart_[i];
+    if (!unknown_[i]) {
+      col[pos] = int(i);
+      val[pos] = 1.0;
+      b_[i] = 0;
+      continue;
+    }
     Index diagPos = -1;
     double diag = 0, rhs = 0;
-    auto putDiag = [&]() { diagPos = pos; col[pos] = r; val[pos++] = 0; };
+    auto putDiag = [&]() { diagPos = pos; col[pos] = int(i); val[pos++] = 0; };
     if (s.isFluid(i)) {
       // -sum_j V L_ij (p_j - p_i) = -b_i. A row whose weights break the M-matrix
       // sign pattern (a negative neighbour weight or a non-positive diagonal, seen
@@ -80,9 +96,9 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
         const Index j = nl.j[k];
         const double c = V * (mMatrix ? s.weights.lapW[k] : -2.0 * s.kernel.dwdr(nl.r[k]) / nl.r[k]);
         diag += c;
-        if (unknown_[j] < 0) continue;
+        if (!unknown_[j]) continue;
         if (diagPos < 0 && j > i) putDiag();
-        col[pos] = unknown_[j];
+        col[pos] = int(j);
         val[pos++] = -c;
       }
       rhs = -source[i];
@@ -90,9 +106,9 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
       const AdamiRow<D> row = AdamiRow<D>::compute(s, i);
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const Index j = nl.j[k];
-        if (unknown_[j] < 0 || !s.isFluid(j)) continue;
+        if (!unknown_[j] || !s.isFluid(j)) continue;
         if (diagPos < 0 && j > i) putDiag();
-        col[pos] = unknown_[j];
+        col[pos] = int(j);
         val[pos++] = -s.weights.w[k] / row.weightSum;
       }
       diag = 1.0;
@@ -100,15 +116,15 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
     }
     if (diagPos < 0) putDiag();
     val[diagPos] = diag;
-    b_[r] = rhs;
+    b_[i] = rhs;
   }
   standardRows_ = fallbacks;
   if (pinned_) {
     // Fix the pressure level: the first fluid unknown gets p = 0.
-    for (Index r = 0; r < m; ++r)
-      if (s.isFluid(rowParticle_[r])) {
-        for (Index k = rowStart_[r]; k < rowStart_[r + 1]; ++k) val[k] = (col[k] == r) ? 1.0 : 0.0;
-        b_[r] = 0;
+    for (long i = 0; i < n; ++i)
+      if (unknown_[i] && s.isFluid(i)) {
+        for (Index k = rowStart_[i]; k < rowStart_[i + 1]; ++k) val[k] = (col[k] == i) ? 1.0 : 0.0;
+        b_[i] = 0;
         break;
       }
   }
@@ -117,13 +133,14 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
 template <int D>
 LinearSolveResult PressureEquation<D>::solve(FlowState<D>& s) {
   auto& p = s.particles.pressure;
-  const Index m = Index(A_.rows());
-  x_.resize(m);
-  for (Index r = 0; r < m; ++r) x_[r] = p[rowParticle_[r]];  // warm start
-  LinearSolveResult res = m > 0 ? solver_->solve(A_, b_, x_) : LinearSolveResult{true, 0, 0, ""};
-  const long n = long(s.size());
+  const long n = long(A_.rows());
+  x_.resize(n);
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) p[i] = unknown_[i] >= 0 ? x_[unknown_[i]] : 0.0;
+  for (long i = 0; i < n; ++i) x_[i] = unknown_[i] ? p[i] : 0.0;  // warm start
+  LinearSolveResult res = numUnknowns_ > 0 ? solver_->solve(A_, b_, x_) : LinearSolveResult{true, 0, 0, ""};
+  if (numUnknowns_ == 0) x_.setZero();
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) p[i] = unknown_[i] ? x_[i] : 0.0;
   return res;
 }
 

@@ -4,8 +4,13 @@
 //   free-surface and splash particles: p = 0 (Dirichlet, eliminated)
 //   wall particles with fluid neighbours: the Adami row (methods.md 11 A)
 //   no Dirichlet particle at all (closed or fully periodic domain): one row pinned to p = 0.
+// Every particle has a row, in particle order, so the numbering of the system
+// only changes when the particles are reordered (a solver may then keep a
+// preconditioner across steps); particles with p = 0 (free surface, splash,
+// walls away from the fluid) get the row p_i = 0 and no column elsewhere.
 // The matrix is written straight into compressed row storage in parallel, then
 // solved by the configured LinearSolver, warm-started from the last pressure.
+// No allocation once the buffers have grown to the largest size seen.
 #pragma once
 #include "operators/FlowState.hpp"
 #include "pressure/LinearSolver.hpp"
@@ -21,7 +26,8 @@ class PressureEquation {
   void assemble(const FlowState<D>& s, const std::vector<double>& source);
   // Solves and writes particles.pressure (p = 0 where not an unknown).
   LinearSolveResult solve(FlowState<D>& s);
-  long numUnknowns() const { return long(A_.rows()); }
+  // Particles whose pressure is solved for (the other rows are p = 0).
+  long numUnknowns() const { return numUnknowns_; }
   const SparseMatrixR& matrix() const { return A_; }
   const Eigen::VectorXd& rhs() const { return b_; }
   bool pinned() const { return pinned_; }
@@ -30,10 +36,11 @@ class PressureEquation {
 
  private:
   std::unique_ptr<LinearSolver> solver_;
-  std::vector<Index> unknown_;     // per particle: row index, or -1 (p = 0)
-  std::vector<Index> rowStart_;    // per unknown: start in the CSR arrays
-  std::vector<Index> rowParticle_; // per unknown: the particle
+  std::vector<std::uint8_t> unknown_;  // per particle: 1 = solved for, 0 = p = 0
+  std::vector<Index> rowStart_;        // per row: start in the CSR arrays
+  std::vector<std::int64_t> ids_;      // particle ids of the last assembly (detects reordering)
   SparseMatrixR A_;
+  long numUnknowns_ = 0;
   Eigen::VectorXd b_, x_;
   bool pinned_ = false;
   long standardRows_ = 0;

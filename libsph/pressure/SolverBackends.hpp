@@ -25,4 +25,8 @@ std::unique_ptr<LinearSolver> makeSparseLU();
 // Eigen's IncompleteLUT (dual threshold ILU) as a Preconditioner.
 std::unique_ptr<Preconditioner> makeILUT(double dropTolerance, int fillFactor);
 
+// hypre BoomerAMG (HypreAMG.cpp): available when built with libhypre-dev.
+bool hypreAvailable();
+std::unique_ptr<Preconditioner> makeHypreAMG(int reuse);
+
 }  // namespace shizuku
