@@ -182,7 +182,10 @@ void Simulation<D>::reorderParticles() {
   const std::vector<Index> perm = search_->cellOrder(P.position);
   auto apply = [&](auto& v) {
     if (v.empty()) return;
-    auto copy = v;
+    // One scratch copy per field type, kept between reorderings (no allocation once
+    // it has the capacity; reordering runs on one thread).
+    static std::remove_reference_t<decltype(v)> copy;
+    copy = v;
     for (std::size_t k = 0; k < perm.size(); ++k) v[k] = copy[perm[k]];
   };
   apply(P.position);
@@ -216,7 +219,8 @@ int Simulation<D>::run() {
   double particleSteps = 0;
   int exitCode = 0;
   bool stopNow = false;
-  fs::file_time_type controlTime = fs::last_write_time(files_.path("system/controlDict"));
+  const fs::path controlPath = files_.path("system/controlDict");  // built once: no allocation per step
+  fs::file_time_type controlTime = fs::last_write_time(controlPath);
   const double span = std::max(rc_.endTime - s_.time, 1e-300);
   const double startTime = s_.time;
   try {
@@ -235,8 +239,8 @@ int Simulation<D>::run() {
       checkHealth("after the step");
       const bool writeNow = rc_.isWriteStep(s_.time, s_.step) || s_.time >= rc_.endTime - rc_.timeTolerance();
       // stopAt writeNow edited into the running case, or a signal.
-      if (fs::last_write_time(files_.path("system/controlDict")) != controlTime) {
-        controlTime = fs::last_write_time(files_.path("system/controlDict"));
+      if (fs::last_write_time(controlPath) != controlTime) {
+        controlTime = fs::last_write_time(controlPath);
         try {
           const Dictionary d = Dictionary::fromFile(files_.path("system/controlDict"));
           if (d.getWordOr("stopAt", "endTime") == "writeNow") {
