@@ -1,0 +1,266 @@
+#!/usr/bin/python3
+"""Stability checker for a finished run of a hard case (label `stability`, docs/testing.md).
+
+usage: checkStability.py CASE LIMITS --compare SHIZUKUCOMPARE
+
+CASE is a run case folder (after tests/cases/runCase.py: it holds `exitCode` and
+log.shizuku); LIMITS a dictionary in the case syntax:
+
+    volume           { rel 0.05; }     // |V(t) - V(0)| <= rel V(0), V = sum m/<rho> (conservation.dat)
+    energy           { rel 0.05; }     // total energy growth bound, below
+    densityErrorMode { max 2; }        // |mode| of eq. 22 over interior particles, in %
+    densityErrorRms  { max 5; }        // optional: interior rms, in %
+    wallTolerance    0;                // how far (times d0) a fluid particle centre may lie
+                                       // beyond a wall surface before it counts as inside
+    knownFailures    (densityErrorMode);   // optional: strict expected failures, below
+
+It asserts, each as its own line:
+ 1. the health guards did not fire: exit status 0 and no 'numerical failure' in the log;
+ 2. no NaN or Inf: every postProcessing file and every field of every time directory;
+ 3. no particle lost: every time directory holds the same fluid particle ids, and the
+    nominal fluid volume (N m/rho0) of conservation.dat never changes;
+ 4. no particle inside a wall: in every time directory every fluid particle centre lies
+    inside the box of each wall region of system/particlesDict (open faces unbounded),
+    up to wallTolerance d0;
+ 5. the fluid volume stays within `volume/rel` of its initial value (every sample);
+ 6. the kinetic energy is bounded by what the physics allows. Nothing feeds energy in
+    (fixed walls, constant gravity), so the total energy E = E_k + E_p, E_p = -sum m g.x,
+    may only fall. At every time directory E(t) <= E(0) + rel B, where B = E(0) - E_p,floor
+    is the energy available above the floor (E_p,floor: every fluid particle at the lowest
+    height its centre can reach, the container floor + d0/2; without gravity B = E_k(0));
+    and at every conservation.dat sample E_k(t) <= E_k(0) + (1 + rel) (E_p(0) - E_p,floor);
+ 7. the interior density-error mode (densityError.dat) stays within densityErrorMode/max
+    (and the rms within densityErrorRms/max when given).
+An assertion whose id (healthGuards finite (time directories) finiteSeries
+(postProcessing) lost walls volume energy kineticEnergy densityErrorMode densityErrorRms) is listed in knownFailures is a strict expected failure:
+its failure is printed as XFAIL and not counted, and its passing is counted as a failure
+(XPASS), so the list must be emptied as soon as the method is fixed. The case README
+says why each listed id fails.
+The last line is `N passed, M failed`; exit status 0 when all pass.
+"""
+import argparse
+import importlib.util
+import math
+import os
+import re
+import sys
+from importlib.machinery import SourceFileLoader
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+PASSED, FAILED, XFAILED = [], [], []
+KNOWN = set()  # ids listed in the limits' knownFailures
+
+
+def check(cond, what, ident=None):
+    """One assertion. An id listed in knownFailures is a strict expected failure: its
+    failure is reported (XFAIL) but not counted; its passing fails (XPASS), so that the
+    list is emptied as soon as the method is fixed."""
+    if ident in KNOWN:
+        if cond:
+            print(f"XPASS {what}: listed in knownFailures but passes; remove '{ident}' from knownFailures")
+            FAILED.append(what)
+        else:
+            print(f"XFAIL {what} [known failure '{ident}', see the case README]")
+            XFAILED.append(what)
+        return cond
+    print(("ok   " if cond else "FAIL ") + what)
+    (PASSED if cond else FAILED).append(what)
+    return cond
+
+
+def load_compare(path):
+    loader = SourceFileLoader("shizukuCompare", path)
+    spec = importlib.util.spec_from_loader("shizukuCompare", loader)
+    mod = importlib.util.module_from_spec(spec)
+    loader.exec_module(mod)
+    return mod
+
+
+def read_vtp(path):
+    r = vtk.vtkXMLPolyDataReader()
+    r.SetFileName(path)
+    r.Update()
+    poly = r.GetOutput()
+    out = {"position": vtk_to_numpy(poly.GetPoints().GetData()).copy()}
+    pd = poly.GetPointData()
+    for k in range(pd.GetNumberOfArrays()):
+        out[pd.GetArrayName(k)] = vtk_to_numpy(pd.GetArray(k)).copy()
+    fd = poly.GetFieldData()
+    for k in range(fd.GetNumberOfArrays()):
+        a = fd.GetArray(k)
+        if a is not None:
+            out["field:" + a.GetName()] = vtk_to_numpy(a).copy()
+    return out
+
+
+def time_dirs(case):
+    out = []
+    for name in os.listdir(case):
+        try:
+            t = float(name)
+        except ValueError:
+            continue
+        if os.path.isfile(os.path.join(case, name, "particles.vtp")):
+            out.append((t, name))
+    return sorted(out)
+
+
+def vec(v):
+    return np.array([float(x) for x in v])
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("case")
+    ap.add_argument("limits")
+    ap.add_argument("--compare", required=True)
+    a = ap.parse_args()
+    cm = load_compare(a.compare)
+    lim = cm.read_dictionary(a.limits)
+    known = lim.get("knownFailures", [])
+    KNOWN.update(known if isinstance(known, list) else [known])
+    ids = {"healthGuards", "finite", "finiteSeries", "lost", "walls", "volume", "energy", "kineticEnergy", "densityErrorMode",
+           "densityErrorRms"}
+    if KNOWN - ids:
+        raise SystemExit(f"checkStability: unknown ids in knownFailures: {' '.join(sorted(KNOWN - ids))} "
+                         f"(known: {' '.join(sorted(ids))})")
+    case = a.case
+    name = os.path.basename(os.path.normpath(case))
+
+    # 1. health guards
+    rc = int(open(os.path.join(case, "exitCode")).read()) if os.path.isfile(os.path.join(case, "exitCode")) else -1
+    log = open(os.path.join(case, "log.shizuku")).read() if os.path.isfile(os.path.join(case, "log.shizuku")) else ""
+    fired = [ln for ln in log.splitlines() if "numerical failure" in ln]
+    check(rc == 0 and not fired, f"{name}: health guards did not fire (exit status {rc}"
+                                 f"{'; ' + fired[0].strip() if fired else ''})", "healthGuards")
+    ends = re.findall(r"End: .*", log)
+    if ends:
+        print("     " + ends[-1])
+
+    # 2. finite postProcessing
+    pp = os.path.join(case, "postProcessing")
+    series = cm.Series(case)
+    bad = [k for k, (t, v) in series.columns.items() if not (np.all(np.isfinite(t)) and np.all(np.isfinite(v)))]
+    check(len(series.columns) > 0 and not bad, f"{name}: no nan or inf in {len(series.columns)} postProcessing "
+                                                f"columns{': ' + ' '.join(bad[:5]) if bad else ''}", "finiteSeries")
+
+    # particlesDict walls and gravity
+    pdict = cm.read_dictionary(os.path.join(case, "system/particlesDict"))
+    d0 = float(pdict["spacing"])
+    walls = []
+    for rname, reg in pdict.get("regions", {}).items():
+        if isinstance(reg, dict) and reg.get("type") == "wall":
+            opened = reg.get("open", [])
+            opened = opened if isinstance(opened, list) else [opened]
+            walls.append((rname, vec(reg["min"]), vec(reg["max"]), set(opened)))
+    gfile = os.path.join(case, "constant/g")
+    g = vec(cm.read_dictionary(gfile)["value"]) if os.path.isfile(gfile) else None
+    wall_tol = float(lim.get("wallTolerance", 0.0)) * d0
+
+    # 2-4, 6 over the time directories
+    times = time_dirs(case)
+    check(len(times) >= 2, f"{name}: {len(times)} time directories")
+    ids0, energy0, floor_pe, budget = None, None, None, None
+    worst_wall = (0.0, None, None)
+    worst_energy = (-math.inf, None)
+    nonfinite, lost = [], []
+    e_rel = float(lim["energy"]["rel"])
+    for t, tname in times:
+        p = read_vtp(os.path.join(case, tname, "particles.vtp"))
+        for k, v in p.items():
+            if np.issubdtype(np.asarray(v).dtype, np.floating) and not np.all(np.isfinite(v)):
+                nonfinite.append(f"{tname}/{k}")
+        fluid = p["type"] == 0
+        dim = int(p.get("field:dimension", [2])[0])
+        x = p["position"][fluid][:, :dim]
+        u = p["U"][fluid][:, :dim]
+        m = float(p["field:mass"][0])
+        ids = np.sort(p["id"][fluid])
+        if ids0 is None:
+            ids0 = ids
+        elif not np.array_equal(ids, ids0):
+            lost.append(f"{tname}: {len(ids)} fluid particles, {len(ids0)} at the start")
+        for wname, lo, hi, opened in walls:
+            axes = ["left", "right", "bottom", "top", "front", "back"]
+            for k in range(dim):
+                if axes[2 * k] not in opened:
+                    depth = float(np.max(lo[k] - x[:, k]))
+                    if depth > worst_wall[0]:
+                        worst_wall = (depth, tname, f"{wname} {axes[2 * k]}")
+                if axes[2 * k + 1] not in opened:
+                    depth = float(np.max(x[:, k] - hi[k]))
+                    if depth > worst_wall[0]:
+                        worst_wall = (depth, tname, f"{wname} {axes[2 * k + 1]}")
+        ek = 0.5 * m * float(np.sum(u * u))
+        ep = -m * float(np.sum(x @ g[:dim])) if g is not None else 0.0
+        if energy0 is None:
+            energy0 = (ek, ep)
+            if g is not None and np.linalg.norm(g) > 0:
+                # the lowest height a centre can reach: the container floor + d0/2
+                # (gravity along an axis; the height is -g.x/|g|)
+                k = int(np.argmax(np.abs(g[:dim])))
+                if not walls or abs(g[k]) < 0.999999 * np.linalg.norm(g[:dim]):
+                    raise SystemExit("checkStability: needs a wall region and gravity along an axis")
+                h_floor = max((lo[k] + 0.5 * d0) if g[k] < 0 else -(hi[k] - 0.5 * d0) for _, lo, hi, _ in walls)
+                floor_pe = m * np.linalg.norm(g[:dim]) * h_floor * len(x)
+                budget = ek + ep - floor_pe
+            else:
+                floor_pe = 0.0
+                budget = ek
+            print(f"     energy at t = {t:g}: kinetic {ek:.6g}, potential {ep:.6g}, available above the floor {budget:.6g}")
+        else:
+            growth = (ek + ep) - sum(energy0)
+            if growth / budget > worst_energy[0]:
+                worst_energy = (growth / budget, tname)
+    check(not nonfinite, f"{name}: every time directory finite{': ' + ' '.join(nonfinite[:5]) if nonfinite else ''}",
+          "finite")
+    check(not lost, f"{name}: no particle lost ({len(ids0) if ids0 is not None else 0} fluid particles in every "
+                    f"time directory){': ' + '; '.join(lost[:3]) if lost else ''}", "lost")
+    nominal = [k for k in series.columns if k.endswith("/nominalVolume")]
+    if nominal:
+        v = series.columns[nominal[0]][1]
+        check(np.all(v == v[0]), f"{name}: nominal fluid volume constant over {len(v)} samples", "lost")
+    check(worst_wall[0] <= wall_tol, f"{name}: no fluid particle inside a wall (deepest beyond a wall surface: "
+                                     f"{worst_wall[0] / d0:.3g} d0{' at ' + str(worst_wall[1]) + ' ' + worst_wall[2] if worst_wall[1] else ''}"
+                                     f"; allowed {wall_tol / d0:.3g} d0)", "walls")
+    check(worst_energy[0] <= e_rel, f"{name}: total energy never above E(0) + {e_rel:g} B (largest growth "
+                                    f"{worst_energy[0]:.3g} B at t = {worst_energy[1]})", "energy")
+
+    # 5. volume, 6b. dense kinetic-energy bound, 7. density error
+    vol = [k for k in series.columns if k.endswith("conservation.dat/volume")]
+    if check(len(vol) == 1, f"{name}: conservation volume present"):
+        t, v = series.columns[vol[0]]
+        dev = float(np.max(np.abs(v - v[0])) / v[0])
+        check(dev <= float(lim["volume"]["rel"]), f"{name}: fluid volume within {lim['volume']['rel']:g} of its "
+                                                   f"initial value (largest change {dev:.3g})", "volume")
+    ke = [k for k in series.columns if k.endswith("conservation.dat/kineticEnergy")]
+    if check(len(ke) == 1, f"{name}: conservation kineticEnergy present") and energy0 is not None:
+        t, k_ = series.columns[ke[0]]
+        bound = energy0[0] + (1 + e_rel) * (energy0[1] - floor_pe) if g is not None else energy0[0] * (1 + e_rel)
+        i = int(np.argmax(k_))
+        check(k_[i] <= bound, f"{name}: kinetic energy at most {bound:.6g} (physics bound; largest {k_[i]:.6g} "
+                              f"at t = {t[i]:g})", "kineticEnergy")
+    de = [k for k in series.columns if k.endswith("densityError.dat/mode")]
+    if check(len(de) == 1, f"{name}: densityError mode present"):
+        t, mode = series.columns[de[0]]
+        i = int(np.argmax(np.abs(mode)))
+        check(abs(mode[i]) <= float(lim["densityErrorMode"]["max"]),
+              f"{name}: |density-error mode| at most {lim['densityErrorMode']['max']:g} % (largest {mode[i]:.3g} % "
+              f"at t = {t[i]:g})", "densityErrorMode")
+    if "densityErrorRms" in lim:
+        t, rms = series.columns[de[0].replace("/mode", "/rms")]
+        i = int(np.argmax(rms))
+        check(rms[i] <= float(lim["densityErrorRms"]["max"]),
+              f"{name}: density-error rms at most {lim['densityErrorRms']['max']:g} % (largest {rms[i]:.3g} % "
+              f"at t = {t[i]:g})", "densityErrorRms")
+    if XFAILED:
+        print(f"{len(XFAILED)} known failures (knownFailures in {a.limits}): " + "; ".join(XFAILED))
+    print(f"{len(PASSED)} passed, {len(FAILED)} failed")
+    return 1 if FAILED else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
