@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
       ("dryRun", "read and check the whole case, print the active pipeline and exit 0 without running")
       ("noFunctionObjects", "run without function objects")
       ("threads", po::value<int>()->default_value(0), "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
+  installStopSignalHandlers();  // a signal during a long set-up stops cleanly too
   po::variables_map vm;
   if (auto status = parseCommandLine(argc, argv, "shizuku", desc, vm,
                                      "Exit status: 0 success, 1 bad input, 2 numerical failure.\n"))

@@ -96,6 +96,8 @@ void Simulation<D>::readSchemes() {
   if (const Dictionary* hc = files_.controlDict.subDictPtr("healthChecks")) {
     health_.maxDensityErrorRms = hc->getScalarOr("maxDensityErrorRms", 20.0, dim::none);
     health_.domainMargin = hc->getScalarOr("domainMargin", 0.5, dim::none);
+    if (!(health_.domainMargin >= 0)) hc->error("domainMargin", "must be >= 0 (times the initial extent)");
+    if (!(health_.maxDensityErrorRms > 0)) hc->error("maxDensityErrorRms", "must be > 0 (%)");
   }
 }
 

@@ -89,6 +89,7 @@ class Simulation {
   void reorderParticles();
   double chooseDeltaT(double previous, double nextWrite);
   void checkHealth(const char* where);
+  std::string writeOffendingParticles();
   void writeTime(const std::string& reason);
   void saveGoodState();
   void restoreGoodState();
@@ -115,6 +116,7 @@ class Simulation {
                     corrector, advection, ads, shifting, functionObjects, output; } st_{};
   StepReport report_;
   long ppeFallbacks_ = 0;
+  std::vector<Index> offending_;   // particles of the last failed health check
   std::string startTimeName_;
   std::vector<std::string> written_;
   // Scratch (sized once).

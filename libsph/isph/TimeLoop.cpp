@@ -3,6 +3,7 @@
 // function objects, progress lines and the final summary (design.md 1.3).
 #include "core/Log.hpp"
 #include "io/TimeName.hpp"
+#include "io/VtpFile.hpp"
 #include "isph/Simulation.hpp"
 #include <atomic>
 #include <chrono>
@@ -37,6 +38,7 @@ std::string formatSeconds(double s) {
 void installStopSignalHandlers() {
   std::signal(SIGINT, onStopSignal);
   std::signal(SIGTERM, onStopSignal);
+  std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit becomes a write error (EFBIG), not a kill
 }
 bool stopRequested() { return stopSignal != 0; }
 
@@ -92,35 +94,94 @@ template <int D>
 void Simulation<D>::checkHealth(const char* where) {
   const auto& P = s_.particles;
   const long n = long(s_.size());
-  long bad = -1, out = -1;
-  double maxU = 0;
-  double sumE2 = 0;
-  long nInterior = 0;
+  // Offending particles: every non-finite one, every one outside the domain box,
+  // and (for the density guard) the interior particle with the largest error.
+  offending_.clear();
+  const char* failure = nullptr;
+  double maxU = 0, sumE2 = 0, worstE = 0;
+  long nInterior = 0, worst = -1;
   for (long i = 0; i < n; ++i) {
     if (!s_.isFluid(i)) continue;
     const bool finite = P.position[i].allFinite() && P.velocity[i].allFinite() && std::isfinite(P.pressure[i]);
-    if (!finite && bad < 0) bad = i;
-    if (finite) maxU = std::max(maxU, P.velocity[i].norm());
-    for (int a = 0; a < D; ++a)
-      if (P.position[i][a] < health_.domainMin[a] || P.position[i][a] > health_.domainMax[a]) { if (out < 0) out = i; }
+    bool outside = false;
+    for (int a = 0; a < D && finite; ++a)
+      outside |= P.position[i][a] < health_.domainMin[a] || P.position[i][a] > health_.domainMax[a];
+    if (!finite || outside) {
+      if (!failure || (!finite && std::string(failure) != "non-finite"))
+        failure = finite ? "outside" : "non-finite";
+      offending_.push_back(Index(i));
+      continue;
+    }
+    maxU = std::max(maxU, P.velocity[i].norm());
     if (P.surfaceClass(i) == SurfaceClass::interior) {
       const double e = (s_.rho0 - P.density[i]) / s_.rho0 * 100;
       sumE2 += e * e;
       ++nInterior;
+      if (std::abs(e) > worstE) { worstE = std::abs(e); worst = i; }
     }
   }
   report_.maxSpeed = maxU;
-  if (bad >= 0)
-    throw NumericalError(cat("non-finite position, velocity or pressure ", where, ": particle id ", P.id[bad],
-                             " at step ", s_.step, ", time ", s_.time));
-  if (out >= 0)
-    throw NumericalError(cat("particle id ", P.id[out], " left the domain ", where, " at step ", s_.step,
-                             ", time ", s_.time, " (position ", P.position[out].transpose(),
-                             "; limits set by healthChecks/domainMargin)"));
   const double rms = nInterior ? std::sqrt(sumE2 / nInterior) : 0;
-  if (rms > health_.maxDensityErrorRms)
-    throw NumericalError(cat("interior density error rms ", rms, " % exceeds healthChecks/maxDensityErrorRms ",
-                             health_.maxDensityErrorRms, " % at step ", s_.step, ", time ", s_.time));
+  if (!failure && rms > health_.maxDensityErrorRms) {
+    failure = "density";
+    offending_.push_back(Index(worst));
+  }
+  if (!failure) return;
+  std::string ids;
+  for (std::size_t k = 0; k < offending_.size() && k < 10; ++k) ids += cat(k ? " " : "", P.id[offending_[k]]);
+  if (offending_.size() > 10) ids += cat(" and ", offending_.size() - 10, " more");
+  const std::string at = cat(" at step ", s_.step, ", time ", s_.time);
+  const std::string file = writeOffendingParticles();
+  const std::string see = cat("; ", offending_.size(), " offending particle(s): id ", ids,
+                              file.empty() ? "" : cat(", written to ", file));
+  const std::string f = failure;
+  const long first = P.id[offending_[0]];
+  if (f == "non-finite")
+    throw NumericalError(cat("non-finite position, velocity or pressure ", where, ": particle id ", first, at, see));
+  if (f == "outside")
+    throw NumericalError(cat("particle id ", first, " left the domain ", where, at, " (position ",
+                             P.position[offending_[0]].transpose(), "; limits set by healthChecks/domainMargin)", see));
+  throw NumericalError(cat("interior density error rms ", rms, " % exceeds healthChecks/maxDensityErrorRms ",
+                           health_.maxDensityErrorRms, " %", at, "; worst particle id ", first, " (", worstE, " %)",
+                           see));
+}
+
+// The offending particles of a failed health check, for ParaView:
+// postProcessing/healthChecks/<time>/offending.vtp. Returns the path ("" if it could not be written).
+template <int D>
+std::string Simulation<D>::writeOffendingParticles() {
+  try {
+    const auto& P = s_.particles;
+    ParticleSet<D> sub;
+    sub.mass = P.mass;
+    sub.rho0 = P.rho0;
+    sub.spacing = P.spacing;
+    auto pick = [&](auto& dst, const auto& src) {
+      if (src.empty()) return;
+      dst.clear();
+      for (Index i : offending_) dst.push_back(src[i]);
+    };
+    pick(sub.position, P.position);
+    P.forEachField([&](const char* name, const auto& v) {
+      sub.forEachField([&](const char* n2, auto& w) {
+        if (std::string(name) == n2) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::decay_t<decltype(w)>>) pick(w, v);
+        }
+      });
+    });
+    TimeState ts;
+    ts.time = s_.time;
+    ts.step = s_.step;
+    ts.deltaT = s_.dt;
+    ts.note = "offending particles of a failed health check";
+    const std::string dir = files_.dir + "/postProcessing/healthChecks/" + timeName(s_.time);
+    fs::create_directories(dir);
+    writeVtp<D>(dir + "/offending.vtp", sub, ts);
+    return dir + "/offending.vtp";
+  } catch (const std::exception& e) {
+    Log::get().warning(cat("could not write the offending particles: ", e.what()));
+    return "";
+  }
 }
 
 template <int D>
@@ -196,6 +257,8 @@ void Simulation<D>::reorderParticles() {
 template <int D>
 int Simulation<D>::run() {
   installStopSignalHandlers();
+  for (const auto& left : removeStaleTemporaries(files_.dir))
+    info("removed the leftover of an interrupted write: " + left);
   const double wallStart = clockSeconds();
   const std::size_t nFluid = s_.particles.countFluid();
   const bool freshStart = listTimeDirectories(files_.dir).empty() ||
@@ -289,6 +352,11 @@ int Simulation<D>::run() {
       Log::get().error(cat("could not write the last good state: ", w.what()));
     }
     exitCode = 2;
+  } catch (...) {
+    // A write error (full disk, unwritable case): close the function-object files,
+    // then let the caller report it (exit 1); nothing written before is touched.
+    for (auto& f : functionObjects_) f->end();
+    throw;
   }
   for (auto& f : functionObjects_) f->end();
 
