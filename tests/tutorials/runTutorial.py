@@ -275,7 +275,7 @@ def main():
     pp = os.path.join(case, "postProcessing")
     files = []
     for root, _, fnames in os.walk(pp):
-        files += [os.path.join(root, f) for f in fnames]
+        files += [os.path.join(root, f) for f in fnames if not f.endswith(".vtp")]  # particle files, not series
     check(len(files) > 0, f"{name}: postProcessing has {len(files)} files")
     for path in sorted(files):
         rel = os.path.relpath(path, case)
