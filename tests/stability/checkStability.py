@@ -15,7 +15,8 @@ log.shizuku); LIMITS a dictionary in the case syntax:
     knownFailures    (densityErrorMode);   // optional: strict expected failures, below
 
 It asserts, each as its own line:
- 1. the health guards did not fire: exit status 0 and no 'numerical failure' in the log;
+ 1. the health guards did not fire: exit status 0, no 'numerical failure' in the log and
+    no postProcessing/healthChecks folder (where a guard writes the offending particles);
  2. no NaN or Inf: every postProcessing file and every field of every time directory;
  3. no particle lost: every time directory holds the same fluid particle ids, and the
     nominal fluid volume (N m/rho0) of conservation.dat never changes;
@@ -134,6 +135,8 @@ def main():
     rc = int(open(os.path.join(case, "exitCode")).read()) if os.path.isfile(os.path.join(case, "exitCode")) else -1
     log = open(os.path.join(case, "log.shizuku")).read() if os.path.isfile(os.path.join(case, "log.shizuku")) else ""
     fired = [ln for ln in log.splitlines() if "numerical failure" in ln]
+    if os.path.isdir(os.path.join(case, "postProcessing", "healthChecks")):  # a guard's offending particles
+        fired.append("postProcessing/healthChecks exists (a guard wrote its offending particles)")
     check(rc == 0 and not fired, f"{name}: health guards did not fire (exit status {rc}"
                                  f"{'; ' + fired[0].strip() if fired else ''})", "healthGuards")
     ends = re.findall(r"End: .*", log)
