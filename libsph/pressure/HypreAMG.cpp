@@ -11,7 +11,7 @@
 // preconditioner (measured in docs/performance.md).
 // The Debian hypre is an MPI build without OpenMP: the V-cycle runs on one core;
 // MPI is initialised (as a single process) on first use and finalised at exit.
-// Keys (LinearSolver::create): preconditioner AMG; amgReuse 10.
+// Keys (LinearSolver::create): preconditioner hypreAMG; amgReuse 10.
 #include "core/Log.hpp"
 #include "pressure/SolverBackends.hpp"
 #include <algorithm>

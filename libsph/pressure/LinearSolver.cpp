@@ -1,15 +1,17 @@
 // The linear-solver factory: reads the `pressure` sub-dictionary of
 // system/sphSolution (design.md part 2, methods.md 4.2) and builds a backend:
 //   solver          BiCGSTAB | UMFPACK | KLU | SparseLU        (default BiCGSTAB)
-//   preconditioner  ILU0 | ILUT | diagonal | AMG               (BiCGSTAB; default AMG when
-//                                                              built with hypre, else ILU0)
-//   amgReuse 10                                                (AMG: steps a hierarchy is kept)
+//   preconditioner  AMG | ILU0 | ILUT | diagonal | hypreAMG    (BiCGSTAB; default AMG, the own
+//                                                              smoothed aggregation; hypreAMG only
+//                                                              in builds with -DSHIZUKU_HYPRE=ON)
+//   amgReuse 10                                                (AMG, hypreAMG: steps a hierarchy is kept)
 //   tolerance 1e-8; maxIterations 2000;                        (BiCGSTAB)
 //   blocks N                                                   (ILU0; default: one per thread)
 //   dropTolerance 1e-4; fillFactor 10;                         (ILUT)
 //   reuseSymbolic yes                                          (KLU, UMFPACK)
 // The default was chosen by measurement: docs/performance.md.
 #include "pressure/LinearSolver.hpp"
+#include "pressure/AggregationAMG.hpp"
 #include "pressure/Krylov.hpp"
 #include "pressure/SolverBackends.hpp"
 
@@ -21,7 +23,7 @@ double relativeResidual(const SparseMatrixR& A, const Eigen::VectorXd& b, const 
 
 std::vector<std::string> LinearSolver::names() { return {"BiCGSTAB", "UMFPACK", "KLU", "SparseLU"}; }
 
-std::vector<std::string> LinearSolver::preconditionerNames() { return {"ILU0", "ILUT", "diagonal", "AMG"}; }
+std::vector<std::string> LinearSolver::preconditionerNames() { return {"AMG", "ILU0", "ILUT", "diagonal", "hypreAMG"}; }
 
 namespace {
 LinearSolver::CreateHook& createHook() {
@@ -57,7 +59,7 @@ std::unique_ptr<LinearSolver> LinearSolver::createBuiltin(const Dictionary* d) {
   s.maxIterations = d ? d->getIntOr("maxIterations", 2000) : 2000;
   if (d && !(s.tolerance > 0)) d->error("tolerance", "must be > 0");
   if (d && s.maxIterations <= 0) d->error("maxIterations", "must be > 0");
-  const std::string def = hypreAvailable() ? "AMG" : "ILU0";
+  const std::string def = "AMG";
   const std::string pc = d ? d->getOptionOr("preconditioner", preconditionerNames(), def) : def;
   // Keys of the other preconditioners are accepted and ignored.
   if (d)
@@ -71,12 +73,17 @@ std::unique_ptr<LinearSolver> LinearSolver::createBuiltin(const Dictionary* d) {
     p = makeILUT(drop, fill);
   } else if (pc == "diagonal") {
     p = std::make_unique<DiagonalPreconditioner>();
-  } else if (pc == "AMG") {
-    if (!hypreAvailable())
-      d->error("preconditioner", "AMG needs hypre: install the Debian package libhypre-dev and rebuild (or use ILU0)");
+  } else if (pc == "AMG" || pc == "hypreAMG") {
     const int reuse = d ? d->getIntOr("amgReuse", 10) : 10;
     if (d && reuse < 1) d->error("amgReuse", "must be >= 1 (1: a new hierarchy every step)");
-    p = makeHypreAMG(reuse);
+    if (pc == "AMG") {
+      p = std::make_unique<AggregationAMG>(reuse);
+    } else {
+      if (!hypreAvailable())
+        d->error("preconditioner", "hypreAMG needs a build with hypre: install the Debian package libhypre-dev and "
+                                   "configure with -DSHIZUKU_HYPRE=ON (or use AMG)");
+      p = makeHypreAMG(reuse);
+    }
   } else {
     const int blocks = d ? d->getIntOr("blocks", 0) : 0;
     if (d && blocks < 0) d->error("blocks", "must be >= 0 (0: one block per thread)");

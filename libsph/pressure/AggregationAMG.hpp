@@ -1,0 +1,58 @@
+// Smoothed-aggregation algebraic multigrid preconditioner for the PPE
+// (methods.md 4.2; issue 9 item 3), OpenMP-parallel in every per-cycle
+// operation, no external library. One V-cycle per application:
+//   setup (every `reuse` steps, or when the numbering or size changes, or when
+//   the iteration count grew past 1.5x (+2) the count right after a setup):
+//     strong couplings |a_ij| >= theta sqrt(a_ii a_jj) (theta 0.08); greedy
+//     aggregation (root + strong neighbours, then leftovers join the aggregate of
+//     their largest-coupled neighbour); tentative prolongation P0 = aggregate indicator; smoothed
+//     P = (I - omega D^-1 A) P0, omega = 2/3; restriction R = P^T; coarse
+//     A_c = R A P; recursively until <= 400 unknowns (dense LU there).
+//     Rows with no off-diagonal entry (p = 0 rows) are left out of the coarse grids.
+//   cycle: one hybrid Gauss-Seidel sweep (Gauss-Seidel inside each thread's
+//     contiguous row block, Jacobi across blocks) forward before and backward
+//     after the coarse correction. The finest level always uses the current
+//     matrix; the coarse levels are kept from the last setup (the matrix changes
+//     little from one step to the next).
+// Levels below 8192 rows run on one thread. Setup uses Eigen's sparse products
+// (one thread, allocates); a cycle allocates nothing. Keys: preconditioner AMG; amgReuse 10.
+#pragma once
+#include "pressure/Preconditioner.hpp"
+#include <Eigen/Dense>
+
+namespace shizuku {
+
+class AggregationAMG final : public Preconditioner {
+ public:
+  explicit AggregationAMG(int reuse = 10) : reuse_(std::max(1, reuse)) {}
+  std::string describe() const override;
+  bool setup(const SparseMatrixR& A) override;
+  void apply(const double* r, double* z) const override;
+  void numberingChanged() override { stale_ = true; }
+  void solved(int iterations) override;
+  int levels() const { return int(levels_.size()); }
+  long setups() const { return setups_; }
+  // Sum of the nonzeros of all levels over those of the finest (last setup).
+  double operatorComplexity() const;
+
+ private:
+  struct Level {
+    SparseMatrixR A;                   // coarse levels: R A P (level 0: unused, see fine_)
+    SparseMatrixR P, R;                // to / from the next coarser level
+    std::vector<double> invDiag;
+    mutable std::vector<double> x, b, r, old;
+  };
+  void build(const SparseMatrixR& A);
+  void cycle(int l, const SparseMatrixR& A) const;
+  void smooth(int l, const SparseMatrixR& A, bool forward) const;
+
+  int reuse_;
+  bool stale_ = true;
+  int n_ = 0, sinceSetup_ = 0, setupIterations_ = 0;
+  long setups_ = 0;
+  const SparseMatrixR* fine_ = nullptr;  // this step's matrix (alive during the solve)
+  std::vector<Level> levels_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> coarse_;
+};
+
+}  // namespace shizuku
