@@ -18,11 +18,13 @@ It asserts, each as its own line:
  1. the health guards did not fire: exit status 0, no 'numerical failure' in the log and
     no postProcessing/healthChecks folder (where a guard writes the offending particles);
  2. no NaN or Inf: every postProcessing file and every field of every time directory;
- 3. no particle lost: every time directory holds the same fluid particle ids, and the
-    nominal fluid volume (N m/rho0) of conservation.dat never changes;
- 4. no particle inside a wall: in every time directory every fluid particle centre lies
-    inside the box of each wall region of system/particlesDict (open faces unbounded),
-    up to wallTolerance d0;
+ 3. no particle lost: every time directory holds the same fluid particle ids, the
+    nominal fluid volume (N m/rho0) of conservation.dat never changes, and no fluid
+    particle is out of the container (past the layers of a closed wall face, e.g. over
+    the top of a side wall and down outside it);
+ 4. no particle inside a wall: in every time directory no fluid particle centre lies
+    beyond a closed face of a wall region of system/particlesDict and within its layers,
+    more than wallTolerance d0;
  5. the fluid volume stays within `volume/rel` of its initial value (every sample);
  6. the kinetic energy is bounded by what the physics allows. Nothing feeds energy in
     (fixed walls, constant gravity), so the total energy E = E_k + E_p, E_p = -sum m g.x,
@@ -158,7 +160,7 @@ def main():
         if isinstance(reg, dict) and reg.get("type") == "wall":
             opened = reg.get("open", [])
             opened = opened if isinstance(opened, list) else [opened]
-            walls.append((rname, vec(reg["min"]), vec(reg["max"]), set(opened)))
+            walls.append((rname, vec(reg["min"]), vec(reg["max"]), set(opened), float(reg.get("layers", 3)) * d0))
     gfile = os.path.join(case, "constant/g")
     g = vec(cm.read_dictionary(gfile)["value"]) if os.path.isfile(gfile) else None
     wall_tol = float(lim.get("wallTolerance", 0.0)) * d0
@@ -169,7 +171,7 @@ def main():
     ids0, energy0, floor_pe, budget = None, None, None, None
     worst_wall = (0.0, None, None)
     worst_energy = (-math.inf, None)
-    nonfinite, lost = [], []
+    nonfinite, lost, escaped = [], [], []
     e_rel = float(lim["energy"]["rel"])
     for t, tname in times:
         p = read_vtp(os.path.join(case, tname, "particles.vtp"))
@@ -186,17 +188,21 @@ def main():
             ids0 = ids
         elif not np.array_equal(ids, ids0):
             lost.append(f"{tname}: {len(ids)} fluid particles, {len(ids0)} at the start")
-        for wname, lo, hi, opened in walls:
+        for wname, lo, hi, opened, thick in walls:
             axes = ["left", "right", "bottom", "top", "front", "back"]
             for k in range(dim):
-                if axes[2 * k] not in opened:
-                    depth = float(np.max(lo[k] - x[:, k]))
+                for side, beyond in ((axes[2 * k], lo[k] - x[:, k]), (axes[2 * k + 1], x[:, k] - hi[k])):
+                    if side in opened:
+                        continue
+                    # within the wall's layers: inside the wall; past them: out of the container
+                    inside = beyond[beyond <= thick]
+                    depth = float(np.max(inside)) if len(inside) else 0.0
                     if depth > worst_wall[0]:
-                        worst_wall = (depth, tname, f"{wname} {axes[2 * k]}")
-                if axes[2 * k + 1] not in opened:
-                    depth = float(np.max(x[:, k] - hi[k]))
-                    if depth > worst_wall[0]:
-                        worst_wall = (depth, tname, f"{wname} {axes[2 * k + 1]}")
+                        worst_wall = (depth, tname, f"{wname} {side}")
+                    n_out = int(np.sum(beyond > thick))
+                    if n_out and not escaped:
+                        escaped.append(f"{tname}: {n_out} fluid particle(s) past the {wname} {side} wall, "
+                                       f"up to {float(np.max(beyond)) / d0:.3g} d0 beyond its surface")
         ek = 0.5 * m * float(np.sum(u * u))
         ep = -m * float(np.sum(x @ g[:dim])) if g is not None else 0.0
         if energy0 is None:
@@ -207,7 +213,7 @@ def main():
                 k = int(np.argmax(np.abs(g[:dim])))
                 if not walls or abs(g[k]) < 0.999999 * np.linalg.norm(g[:dim]):
                     raise SystemExit("checkStability: needs a wall region and gravity along an axis")
-                h_floor = max((lo[k] + 0.5 * d0) if g[k] < 0 else -(hi[k] - 0.5 * d0) for _, lo, hi, _ in walls)
+                h_floor = max((lo[k] + 0.5 * d0) if g[k] < 0 else -(hi[k] - 0.5 * d0) for _, lo, hi, _, _ in walls)
                 floor_pe = m * np.linalg.norm(g[:dim]) * h_floor * len(x)
                 budget = ek + ep - floor_pe
             else:
@@ -222,6 +228,8 @@ def main():
           "finite")
     check(not lost, f"{name}: no particle lost ({len(ids0) if ids0 is not None else 0} fluid particles in every "
                     f"time directory){': ' + '; '.join(lost[:3]) if lost else ''}", "lost")
+    check(not escaped, f"{name}: no fluid particle out of the container (past a wall's layers)"
+                       f"{': ' + escaped[0] if escaped else ''}", "lost")
     nominal = [k for k in series.columns if k.endswith("/nominalVolume")]
     if nominal:
         v = series.columns[nominal[0]][1]
