@@ -20,11 +20,14 @@ def f(x, d=3):
 
 
 def stages(row):
+    """Top-level stage times (names with a '/' are parts of the stage before the '/',
+    already inside its time)."""
     out = {}
     for kv in (row.get("stages") or "").split(";"):
         if "=" in kv:
             k, v = kv.split("=")
-            out[k] = float(v)
+            if "/" not in k:
+                out[k] = float(v)
     return out
 
 
@@ -67,7 +70,7 @@ GROUPS = [("neighbours", ["neighbours"]), ("weights", ["weights"]), ("density", 
           ("freeSurface+fit", ["freeSurface", "surfaceFit"]), ("predictor", ["predictor"]),
           ("ppeAssembly", ["ppeAssembly"]), ("ppeSolve", ["ppeSolve"]), ("corrector", ["corrector"]),
           ("advection+xsph+ads", ["advection", "xsph", "ads"]),
-          ("shifting", ["shifting", "shifting/distribution", "shifting/volumeCorrection", "shifting/surfaceFitting"])]
+          ("shifting", ["shifting"]), ("other", ["functionObjects", "output"])]
 
 
 def write(csvPath, mdPath, quick):
@@ -123,17 +126,21 @@ def write(csvPath, mdPath, quick):
     ad = find(rows, "timestep", "KO-dx0.01-adaptive")
     if ad:
         w = float(ad["wall"]) / float(ad["simTime"])
-        add(f"| <= 60 wall s per simulated s at dx = 0.01 | {f(w)} s/s (adaptive dt, {ad['steps']} steps to "
+        add(f"| <= 60 wall s per simulated s at dx = 0.01 | {f(w)} s/s, CPU {f(float(ad['cpu']) / float(ad['simTime']))} "
+            f"s/s (adaptive dt, {ad['steps']} steps to "
             f"t = {f(ad['simTime'])} s, load {f(ad['load'], 2)}) | {'yes' if w <= 60 else 'no'} | cost per step "
-            "(row 1) times steps per simulated s (CFL-limited once the front moves) |")
+            "(row 1) times steps per simulated s (CFL-limited, maxCo 0.2, once the front moves); maxCo 0.4: "
+            + (lambda r4: f"{f(float(r4['wall']) / float(r4['simTime']))} s/s, front error {f(extra(r4).get('frontError'))} % "
+               f"vs {f(extra(ad).get('frontError'))} %" if r4 else "not run")(find(rows, 'timestep', 'KO-dx0.01-adaptive-maxCo0.4'))
+            + " (see 'Adaptive time step') |")
     s20 = find(rows, "scaling", "KO-20k")
     s320 = find(rows, "scaling", "KO-320k") or find(rows, "scaling", "KO-80k")
     if s20 and s320:
         g = float(s320["usPerParticleStep"]) / float(s20["usPerParticleStep"])
         gc = float(s320["cpuUsPerParticleStep"]) / float(s20["cpuUsPerParticleStep"])
         add(f"| cost per particle-step grows < 1.5x from 20k to 320k | {f(g)}x wall, {f(gc)}x CPU "
-            f"({s320['case']}) | {'yes' if g < 1.5 else 'no'} | PPE iterations are nearly flat with AMG; "
-            "the rest is O(N) |")
+            f"({s320['case']}) | {'yes' if g < 1.5 else 'no'} | AMG iterations are flat (about 5); the other "
+            "stages are O(N); what grows is cache misses at large N |")
     if s320:
         bpp = 1024 * 1024 * float(s320["maxrssMB"]) / float(s320["total"])
         marg = ""
@@ -143,8 +150,10 @@ def write(csvPath, mdPath, quick):
             dn = float(s320["total"]) - float(s80["total"])
             marg = f"; marginal {f(dm / dn)} B (80k to 320k)"
         add(f"| <= 2 KB memory per particle | {f(bpp)} B per particle (peak RSS / all particles, {s320['case']}){marg} "
-            f"| {'yes' if bpp <= 2048 else 'no'} | neighbour pairs (~20 per particle x index, distance, "
-            "vector, weights) dominate |")
+            f"| {'yes' if bpp <= 2048 else 'no'} | per-pair arrays dominate: ~20 pairs per particle, each "
+            "with index, distance, separation vector and kernel, gradient, Laplacian weights (~60-80 B per pair, "
+            "1.2-1.6 KB per particle), plus the PPE matrix and AMG levels (~0.5 KB). Single-precision pair "
+            "geometry, or recomputing separations instead of storing them, would move it below 2 KB |")
     add("")
 
     # ---------------------------------------------------------- throughput
@@ -192,17 +201,16 @@ def write(csvPath, mdPath, quick):
     add("`bench_pressure` records the PPE systems (matrix, right-hand side, warm start) of a K&O dam-break run")
     add("(after its warm-up steps, particles reordered by cell as in a real run) and solves the same sequence with")
     add("each backend. Time per solve (wall: best of the passes; CPU: all threads), BiCGSTAB relative tolerance")
-    add("1e-8, warm start from the previous pressure. AMG = hypre BoomerAMG V-cycle as the BiCGSTAB")
-    add("preconditioner, hierarchy kept up to 10 steps (AMG) or rebuilt every step (AMG-everyStep); ILU0 = block")
-    add("ILU(0) (one block per thread); ILUT = Eigen IncompleteLUT (drop 1e-4, fill 10); KLU/UMFPACK = direct,")
-    add("symbolic analysis kept while the pattern is unchanged.")
+    add("1e-8, warm start from the previous pressure. AMG = the own smoothed-aggregation AMG")
+    add("(libsph/pressure/AggregationAMG) as the BiCGSTAB preconditioner, hierarchy kept up to 10 steps (AMG) or")
+    add("rebuilt every step (AMG-everyStep); ILU0 = block ILU(0) (one block per thread); ILUT = Eigen")
+    add("IncompleteLUT (drop 1e-4, fill 10); KLU/UMFPACK = direct, symbolic analysis kept while the pattern is")
+    add("unchanged (in a flowing case it changes almost every step).")
     add("")
-    sizes = []
+    sizes, names = [], []
     for r in rows:
         if r["part"] == "solvers" and r["case"] not in sizes:
             sizes.append(r["case"])
-    names = []
-    for r in rows:
         if r["part"] == "solvers" and r["solver"] not in names:
             names.append(r["solver"])
     add("| backend | threads | " + " | ".join(f"{s} ms/solve (CPU) [it]" for s in sizes) + " | CPU cost ~ N^p |")
@@ -225,25 +233,40 @@ def write(csvPath, mdPath, quick):
             add(f"| {name} | {T} | " + " | ".join(cells) + f" | {p} |")
     add("")
     add("p is the slope of log(CPU per solve) against log(unknowns) between the smallest and the largest size a")
-    add("backend ran (1 = linear). Direct solvers and ILUT are skipped at sizes where a single solve takes")
-    add("seconds. **Default: BiCGSTAB + AMG (hierarchy kept up to 10 steps) when hypre is installed, else**")
-    add("**BiCGSTAB + block ILU(0).** Reasons, from the table: the AMG iteration count stays near 4 at every")
-    add("size, so its cost per unknown grows least; ILU(0)'s iterations grow with the resolution (its cost grows")
-    add("faster than N); ILUT's factorisation and the direct factorisations cost more than the whole AMG solve at")
-    add("every size measured. Keeping the hierarchy for several steps (the matrix changes little between steps)")
-    add("halves the AMG cost without raising the iteration count. hypre's Debian build is MPI-only (no OpenMP):")
-    add("the V-cycle runs on one core, only the Krylov vector work and products use both.")
+    add("backend ran (1 = linear). Direct solvers and ILUT are skipped at sizes where one solve takes seconds.")
+    add("")
+    add("**Default: BiCGSTAB + AMG (own smoothed aggregation, hierarchy kept up to 10 steps).** From the table:")
+    add("its iteration count stays at about 5 at every size, so its cost grows about linearly with N, and it is")
+    add("the cheapest backend at every size measured; ILU(0)'s iterations double with each halving of dx (its")
+    add("cost grows like N^1.5) and the block split used for two threads adds about 20 % iterations; ILUT's")
+    add("factorisation and the direct factorisations cost more than the whole AMG solve at every size (the direct")
+    add("ones grow like N^1.5 or faster). Keeping the hierarchy between steps (the matrix changes little) roughly")
+    add("halves the AMG cost at the same iteration count; the hierarchy is rebuilt at every particle reordering,")
+    add("after 10 steps, or when the iterations exceed 1.5x (+2) those right after the last rebuild.")
+    add("")
+    add("hypre BoomerAMG (Debian libhypre-dev) is available as `preconditioner hypreAMG` in builds configured with")
+    add("`-DSHIZUKU_HYPRE=ON` (off by default: the Debian build needs MPI_Init, which aborts under restricted")
+    add("limits). Measured during development on the same 20k systems, one thread: 4 iterations, 18-22 ms per")
+    add("solve with the hierarchy kept 10 steps, 38-44 ms rebuilt every step; its V-cycle is single-threaded")
+    add("(the Debian build has no OpenMP), so the own AMG, which uses both cores, is the default.")
+    add("")
+    add("OpenMP wait policy: on a loaded machine threads that spin at barriers take the core their partner")
+    add("needs. Measured (AMG solve, 86k unknowns, 2 threads, load 3.4): 1586 ms per solve with the default")
+    add("(spinning) policy, 148 ms with `OMP_WAIT_POLICY=PASSIVE`; this benchmark sets PASSIVE unless the")
+    add("variable is given. On an idle machine the difference is small.")
     add("")
 
     # ---------------------------------------------------------- time step
     add("## Adaptive time step (K&O dam break, dx = 0.01 m, 2 threads)")
     add("")
-    add("| run | steps | simulated s | wall s | wall s per simulated s | us/particle-step |")
-    add("|---|---|---|---|---|---|")
+    add("| run | steps | simulated s | wall s | wall s per simulated s | CPU s per simulated s | us/particle-step | load | front error % |")
+    add("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         if r["part"] == "timestep":
             add(f"| {r['case']} | {r['steps']} | {f(r['simTime'])} | {f(r['wall'])} | "
-                f"{f(float(r['wall']) / float(r['simTime']))} | {f(r['usPerParticleStep'])} |")
+                f"{f(float(r['wall']) / float(r['simTime']))} | {f(float(r['cpu']) / float(r['simTime']))} | "
+                f"{f(r['usPerParticleStep'])} | {f(r['load'], 2)} | "
+                f"{f(extra(r).get('frontError'))} |")
     fx = find(rows, "timestep", "KO-dx0.01-fixed1e-4")
     if ad and fx:
         stepsFixed = float(ad["simTime"]) / 1e-4
@@ -280,13 +303,17 @@ def write(csvPath, mdPath, quick):
     add("- The PPE has one row per particle (free-surface particles and walls away from the fluid get p = 0")
     add("  rows), so the numbering only changes at a reordering: that is what lets the AMG hierarchy be kept.")
     add("- No allocation inside the time loop: `tests/unit/test_isph_noAllocation` replaces the allocation")
-    add("  functions by counting ones and runs the whole method (SPH2, free surface, surface fit, shifting, ADS,")
-    add("  XSPH, Adami walls): 0 allocations in 20 steps after a warm-up with BiCGSTAB + ILU0 or diagonal at 2")
-    add("  threads. With 1 thread libgomp allocates its team in every parallel region (counted apart). hypre")
-    add("  allocates inside its setup and V-cycle (several hundred per step; reported by the test, not asserted).")
-    add("  Around the steps, run() allocated 180 times per 40 steps before this work (a copy of every field at")
-    add("  each reordering, the controlDict path every step); now 20 per 40 steps (the reordering permutation")
-    add("  returned by value, the rest not yet traced).")
+    add("  functions (operator new and malloc/calloc/realloc/memalign) by counting ones and runs the whole method")
+    add("  (SPH2, free surface, surface fit, shifting, ADS, XSPH, Adami walls) on a small dam break: 0 allocations")
+    add("  in 20 steps after a warm-up with BiCGSTAB + ILU0, diagonal, or AMG between two rebuilds of its")
+    add("  hierarchy, at 2 threads (once, under load, 1 allocation was seen: a buffer reaching a new largest size;")
+    add("  the test allows 5 per 20 steps, a stage allocating every step gives 20 or more). A rebuild of the AMG")
+    add("  hierarchy (every 10 steps) allocates (~180 per rebuild at 1.5k unknowns, Eigen's sparse products).")
+    add("  libgomp allocates its team structure in every parallel region that runs on one thread (1-thread runs")
+    add("  and the AMG's small levels): counted apart, not ours to change. Around the steps, run() allocated 180")
+    add("  times per 40 steps before this work (a copy of every field at each reordering, the controlDict path")
+    add("  every step); now 20 per 40 steps (the permutation returned by NeighbourSearch::cellOrder, the rest")
+    add("  not yet traced).")
     add("")
 
     # ---------------------------------------------------------- what remains
@@ -297,9 +324,10 @@ def write(csvPath, mdPath, quick):
         tot = sum(st.values()) or 1
         add("At 20k particles on 2 threads the split of a step is: " +
             ", ".join(f"{k} {100 * v / tot:.0f} %" for k, v in sorted(st.items(), key=lambda kv: -kv[1])[:6]) + ".")
-    add("- The PPE solve is still the largest stage. hypre's V-cycle is single-threaded in the Debian build;")
-    add("  an OpenMP AMG (own smoothed aggregation, or hypre built with OpenMP) would use the second core there;")
-    add("  a looser tolerance (1e-6) would cut iterations but changes accuracy and was not adopted.")
+    add("- The PPE solve: the AMG setup (Eigen sparse products, one thread) runs every 10 steps and at each")
+    add("  reordering; a parallel setup, or keeping the hierarchy across reorderings by permuting it, would cut")
+    add("  the AMG-everyStep / AMG difference further. A looser tolerance (1e-6) would cut iterations but")
+    add("  changes accuracy and was not adopted.")
     add("- The other stages (SPH2 weights, shifting, free surface, ADS) each cost about as much as the whole step")
     add("  budget of the 1.5 us target; they belong to their areas and were not changed here.")
     add("- Measurements on a loaded shared machine inflate the 2-thread wall times; rerun")
