@@ -114,12 +114,18 @@ def write(csvPath, mdPath, quick):
         eS = float(extra(sh).get("frontError", "nan"))
         if ps:
             eP = float(extra(ps).get("frontError", "nan"))
-            ratio = float(ps["wall"]) / float(sh["wall"])
+            loop = float(extra(sh).get("loopWall", sh["wall"]))
+            ratio = float(ps["wall"]) / loop
             met = ratio >= 4 and eS < eP
             add(f"| >= 4x faster than PySPH SISPH at dx = 0.03 with a smaller front error | {f(ratio)}x "
-                f"({f(sh['wall'])} s vs {f(ps['wall'])} s to t = {f(sh['simTime'])} s); front error {f(eS)} % vs {f(eP)} % "
-                f"| {'yes' if met else 'no'} | time: ours is the whole run (adaptive dt), PySPH's its 'Run took' "
-                f"(fixed dt {f(0.125 * 1.3 * 0.03 / math.sqrt(2 * 9.81 * 2), 2)} s) |")
+                f"(time loops: {f(loop)} s vs {f(ps['wall'])} s to t = {f(sh['simTime'])} s; whole process "
+                f"{f(sh['wall'])} s); front error {f(eS)} % vs {f(eP)} % | {'yes' if met else 'no'} | ours: "
+                f"{sh['steps']} adaptive steps (maxCo 0.2) at {f(sh['usPerParticleStep'])} us/particle-step; PySPH "
+                f"{ps['steps']} fixed steps at {f(ps['usPerParticleStep'])} us. At 2.2k particles two threads gain "
+                "little (see the throughput table); with maxCo 0.4: "
+                + (lambda r4: f"{f(float(ps['wall']) / float(extra(r4).get('loopWall', r4['wall'])))}x, front error "
+                   f"{f(extra(r4).get('frontError'))} %" if r4 else "not run")(find(rows, "pysph", "KO-dx0.03-shizuku-maxCo0.4"))
+                + " |")
         else:
             add(f"| >= 4x faster than PySPH SISPH at dx = 0.03 | PySPH not run; ours {f(sh['wall'])} s, front error "
                 f"{f(eS)} % | - | install python3-pysph |")
@@ -286,9 +292,9 @@ def write(csvPath, mdPath, quick):
     add("rerun with output for its front (results.npz). Front error: mean |x_front - x_KO| / x_KO over the")
     add("Koshizuka & Oka (1996) points up to T (x_front = largest fluid x + dx/2).")
     add("")
-    add("| code | fluid | steps | wall s | us/particle-step | front error % |")
+    add("| run | fluid | steps | wall s | us/particle-step | front error % |")
     add("|---|---|---|---|---|---|")
-    for r in (sh, ps):
+    for r in (sh, find(rows, "pysph", "KO-dx0.03-shizuku-maxCo0.4"), ps):
         if r:
             add(f"| {r['case']} | {r['fluid']} | {r['steps']} | {f(r['wall'])} | {f(r['usPerParticleStep'])} | "
                 f"{f(extra(r).get('frontError'))} |")
