@@ -20,6 +20,16 @@ enum class ParticleType : std::uint8_t { fluid = 0, wall = 1 };
 // Free-surface class of a fluid particle (methods.md 5.2). Wall particles are `interior`.
 enum class SurfaceClass : std::uint8_t { interior = 0, vicinity = 1, free = 2, splash = 3 };
 
+inline const char* surfaceClassName(SurfaceClass c) {
+  switch (c) {
+    case SurfaceClass::interior: return "interior";
+    case SurfaceClass::vicinity: return "vicinity";
+    case SurfaceClass::free: return "free surface";
+    case SurfaceClass::splash: return "splash";
+  }
+  return "?";
+}
+
 inline bool nearSurface(SurfaceClass c) {
   return c == SurfaceClass::free || c == SurfaceClass::vicinity || c == SurfaceClass::splash;
 }

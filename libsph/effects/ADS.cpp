@@ -6,7 +6,8 @@ namespace shizuku {
 
 template <int D>
 std::string ADS<D>::describe() const {
-  return cat("distance = ", distance_, " d0, C = ", C_, ", on free-surface and vicinity particles");
+  return cat("distance = ", distance_, " d0, C = ", C_, ", partners ", o_.pairwise ? "pair" : "surface",
+             o_.approachingOnly ? ", approaching pairs only" : "", ", on free-surface and vicinity particles");
 }
 
 template <int D>
@@ -15,16 +16,27 @@ void ADS<D>::correctPositions(FlowState<D>& s) {
   const auto& nl = s.neighbours;
   const double dAds = distance_ * s.d0;
   const long n = long(s.size());
+  const auto& u = s.particles.velocity;
   auto moved = [&](Index j) { return s.isFluid(j) && nearSurface(s.surfaceClass(j)); };
   long count = 0;
 #pragma omp parallel for schedule(static) reduction(+ : count)
   for (long i = 0; i < n; ++i) {
     Vec<D> d = Vec<D>::Zero();
-    if (moved(Index(i))) {
+    const bool mi = moved(Index(i));
+    // A pair acts when one of its particles is near the surface; with partners pair an
+    // interior fluid particle takes its half of a pair it shares with one.
+    if (mi || (o_.pairwise && s.isFluid(Index(i)))) {
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const double r = nl.r[k];
         if (!(r < dAds) || !(r > 0)) continue;
-        const double omega = moved(nl.j[k]) ? 0.5 : 1.0;
+        const Index j = nl.j[k];
+        const bool mj = moved(j);
+        if (!mi && !mj) continue;
+        if (o_.approachingOnly && (u[i] - u[j]).dot(nl.rij[k]) >= 0) continue;
+        double omega;
+        if (!s.isFluid(j)) omega = 1.0;                  // a wall: the fluid particle takes it all
+        else if (o_.pairwise || mj) omega = 0.5;         // both partners move
+        else omega = 1.0;                                // partners surface: interior j stays
         d += (omega * (dAds - r) / r) * nl.rij[k];
       }
     }

@@ -9,7 +9,13 @@
 // Jacobi: all dr_i are computed from one configuration, then applied. Walls are
 // never moved; velocities are not changed (advective correction only). The
 // solver refreshes the pair geometry afterwards.
-// Reads (system/sphSchemes, ads): distance 1; (times d0)  C 1;
+// Options (methods.md 9 leaves them open):
+//   partners surface  (default so far) only near-surface particles move; an interior
+//                     fluid partner or a wall stays and i takes the whole correction;
+//   partners pair     both fluid partners of a pair with a near-surface particle move by
+//                     half (the pair's centroid stays: no outward push of the surface);
+//   approaching yes   only pairs closing in, (u_i - u_j) . r_ij < 0, act.
+// Reads (system/sphSchemes, ads): distance 1; (times d0)  C 1;  partners surface;  approaching no;
 #pragma once
 #include "effects/Effect.hpp"
 
@@ -18,7 +24,11 @@ namespace shizuku {
 template <int D>
 class ADS final : public Effect<D> {
  public:
-  ADS(double distance, double C) : distance_(distance), C_(C) {}
+  struct Options {
+    bool pairwise = false;         // partners pair
+    bool approachingOnly = false;  // approaching yes
+  };
+  ADS(double distance, double C, Options o = {}) : distance_(distance), C_(C), o_(o) {}
   std::string name() const override { return "ads"; }
   EffectStage stage() const override { return EffectStage::postAdvection; }
   std::string describe() const override;
@@ -29,6 +39,7 @@ class ADS final : public Effect<D> {
  private:
   double distance_;  // d_ADS / d0
   double C_;
+  Options o_;
   std::vector<Vec<D>> delta_;  // scratch, sized in allocate()
   long count_ = 0;
 };

@@ -7,7 +7,7 @@ namespace shizuku {
 template <int D>
 std::string VolumeCorrection<D>::describe() const {
   return cat("C = ", C_, " (shift length C h per unit density error), interior particles, "
-             "neighbours within 1.1 sqrt(D) d0, wall terms zero");
+             "neighbours within 1.1 sqrt(D) d0, wall and near-surface terms zero");
 }
 
 template <int D>
@@ -28,7 +28,12 @@ void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& d
       const double r = nl.r[k];
       if (!(r < rStar) || !(r > 0)) continue;
       const Index j = nl.j[k];
-      const double ej = s.isFluid(j) ? rho[j] * invRho0 - 1.0 : 0.0;
+      // A neighbour's own density counts only when its kernel sum is whole: a wall, or a
+      // fluid particle near the surface (its sum truncated by the missing outside),
+      // contributes zero, or the kernel deficit would read as under-density and pull
+      // the interior outward (methods.md 7, implementation notes).
+      const bool whole = s.isFluid(j) && s.surfaceClass(j) == SurfaceClass::interior;
+      const double ej = whole ? rho[j] * invRho0 - 1.0 : 0.0;
       sum += ((ei + ej) / r) * nl.rij[k];
     }
     dr[i] += coeff * sum;

@@ -6,7 +6,10 @@
 // (negative bracket) moves i toward j, so an expanded region contracts and a
 // compressed one expands; the opposite sign would be anti-conservative.
 // Wall neighbours are in S*_i with their own term set to zero (<rho>_w := rho0) so
-// that an interior particle next to a wall sees a symmetric neighbourhood.
+// that an interior particle next to a wall sees a symmetric neighbourhood. Fluid
+// neighbours near the free surface (vicinity, free, splash) are treated the same way:
+// their kernel sums are truncated by the missing outside, and reading that deficit as
+// under-density pulled the interior outward and spread it (test_effects_volumeCorrection).
 // <rho> is s.particles.density (computed by the solver at the current positions,
 // self term and walls included); rho0 = s.rho0 (masses calibrated on the lattice).
 // Reads (system/sphSchemes, shifting/volumeCorrection): C 0.1;

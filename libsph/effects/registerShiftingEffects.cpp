@@ -72,7 +72,10 @@ std::unique_ptr<Effect<D>> makeADS(const Dictionary& d, const FlowState<D>&) {
   const double distance = positive(d, "distance", 1.0);
   const double C = positive(d, "C", 1.0);
   if (C > 1) d.error("C", "must be <= 1 (1 restores the distance in one application)");
-  return std::make_unique<ADS<D>>(distance, C);
+  typename ADS<D>::Options o;
+  o.pairwise = d.getOptionOr("partners", {"surface", "pair"}, "surface") == "pair";
+  o.approachingOnly = d.getSwitchOr("approaching", false);
+  return std::make_unique<ADS<D>>(distance, C, o);
 }
 
 template <int D>

@@ -96,6 +96,8 @@ void Simulation<D>::readSchemes() {
   if (const Dictionary* hc = files_.controlDict.subDictPtr("healthChecks")) {
     health_.maxDensityErrorRms = hc->getScalarOr("maxDensityErrorRms", 20.0, dim::none);
     health_.domainMargin = hc->getScalarOr("domainMargin", 0.5, dim::none);
+    health_.maxSpeed = hc->getScalarOr("maxSpeed", 0.0, dim::velocity);
+    if (!(health_.maxSpeed >= 0)) hc->error("maxSpeed", "must be >= 0 (m/s; 0 chooses it from the case)");
     if (!(health_.domainMargin >= 0)) hc->error("domainMargin", "must be >= 0 (times the initial extent)");
     if (!(health_.maxDensityErrorRms > 0)) hc->error("maxDensityErrorRms", "must be > 0 (%)");
   }
@@ -118,7 +120,14 @@ void Simulation<D>::buildEffects() {
       if (const Dictionary* d = sh->subDictPtr(term)) add(std::string("shifting/") + term, *d);
     maxShift_ = sh->getScalarOr("maxShift", 0.1, dim::none);
     if (!(maxShift_ > 0)) sh->error("maxShift", "must be > 0 (times h)");
-    taylorCorrection_ = sh->getSwitchOr("taylorCorrection", true);
+    {
+      const std::string t = sh->getOptionOr("taylorCorrection",
+          {"on", "yes", "true", "off", "no", "false", "everywhere", "belowSurface", "interior"}, "on");
+      if (t == "off" || t == "no" || t == "false") taylorCorrection_ = TaylorCorrection::off;
+      else if (t == "everywhere") taylorCorrection_ = TaylorCorrection::everywhere;
+      else if (t == "interior") taylorCorrection_ = TaylorCorrection::interior;
+      else taylorCorrection_ = TaylorCorrection::belowSurface;  // on: where the gradient is two-sided
+    }
   }
   // Order effects by the stage they act in (stable: keeps dictionary order inside a stage).
   std::stable_sort(effects_.begin(), effects_.end(),
@@ -135,7 +144,7 @@ void Simulation<D>::buildEffects() {
   if (anyShift) {
     s_.particles.shift.assign(s_.size(), Vec<D>::Zero());
     dr_.resize(s_.size());
-    if (taylorCorrection_) { needs_.velocityGradient = true; gradU_.resize(s_.size()); }
+    if (taylorCorrection_ != TaylorCorrection::off) { needs_.velocityGradient = true; gradU_.resize(s_.size()); }
   }
   if (needs_.surfaceFit) {
     s_.fitDistance.assign(s_.size(), NAN);
@@ -199,6 +208,15 @@ void Simulation<D>::setupInitialState() {
   const Vec<D> ext = (hi - lo).cwiseMax(Vec<D>::Constant(s_.d0));
   health_.domainMin = lo - health_.domainMargin * ext;
   health_.domainMax = hi + health_.domainMargin * ext;
+  // Speed guard: no flow of this case can exceed ten times the larger of its starting
+  // speed and the free-fall speed over the largest extent of the domain.
+  if (health_.maxSpeed == 0) {
+    double u0 = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (P.isFluid(i)) u0 = std::max(u0, P.velocity[i].norm());
+    const double fall = s_.gravity ? std::sqrt(2 * s_.g.norm() * ext.maxCoeff()) : 0.0;
+    health_.maxSpeed = std::max(u0, fall) > 0 ? 10 * std::max(u0, fall) : INFINITY;
+  }
 }
 
 template <int D>
@@ -243,7 +261,7 @@ std::string Simulation<D>::pipeline() const {
   bool anyShift = false;
   for (const auto& e : effects_)
     if (e->stage() == EffectStage::shift) { line(cat(e->name(), " (", e->describe(), ")")); anyShift = true; }
-  if (anyShift) line(cat("shift cap |dr| <= ", maxShift_, " h", taylorCorrection_ ? ", Taylor-corrected velocity" : ""));
+  if (anyShift) line(cat("shift cap |dr| <= ", maxShift_, " h", taylorCorrectionDescription()));
   else line("shifting: off");
   for (const auto& f : functionObjects_) line(cat("function object ", f->name(), ": ", f->type(), " (", f->describe(), ")"));
   line(cat("time: ", rc_.adjustTimeStep ? cat("adjustable dt, maxCo ", rc_.maxCo) : cat("fixed dt ", rc_.deltaT, " s"),
@@ -398,7 +416,7 @@ void Simulation<D>::shiftParticles() {
   {
     StageTimers::Scope t(timers_, st_.shifting);
     // Velocity gradient of u^{n+1} for the Taylor correction (walls show the fluid's Shepard velocity).
-    if (taylorCorrection_) {
+    if (taylorCorrection_ != TaylorCorrection::off) {
 #pragma omp parallel for schedule(static)
       for (long i = 0; i < n; ++i) s_.uStar[i] = P.velocity[i];
       shepardFluidVelocity(s_, s_.uStar);
@@ -421,7 +439,7 @@ void Simulation<D>::shiftParticles() {
     if (!s_.isFluid(i)) { P.shift[i].setZero(); continue; }
     P.position[i] += dr_[i];
     if (s_.periodic.any()) s_.periodic.wrap(P.position[i]);
-    if (taylorCorrection_) P.velocity[i] += gradU_[i] * dr_[i];
+    if (taylorCorrected(P.surfaceClass(i))) P.velocity[i] += gradU_[i] * dr_[i];
     P.shift[i] = dr_[i];
   }
 }

@@ -36,6 +36,7 @@ struct HealthLimits {
   double maxDensityErrorRms = 20;     // % over interior particles
   Eigen::VectorXd domainMin, domainMax;  // fluid particles must stay inside
   double domainMargin = 0.5;          // times the initial extent, on each side
+  double maxSpeed = 0;                // m/s; 0: automatic, 10 max(|U|_start, sqrt(2 |g| L))
 };
 
 template <int D>
@@ -108,7 +109,28 @@ class Simulation {
   std::vector<std::unique_ptr<FunctionObject<D>>> functionObjects_;
   EffectNeeds needs_;
   double maxShift_ = 0.1;   // times h
-  bool taylorCorrection_ = true;
+  // Which shifted particles get u += <grad u> dr (shifting/taylorCorrection): on free-surface
+  // and splash particles the one-sided gradient is unreliable and the product pumps energy.
+  enum class TaylorCorrection { off, interior, belowSurface, everywhere };
+  TaylorCorrection taylorCorrection_ = TaylorCorrection::belowSurface;
+  bool taylorCorrected(SurfaceClass c) const {
+    switch (taylorCorrection_) {
+      case TaylorCorrection::off: return false;
+      case TaylorCorrection::interior: return c == SurfaceClass::interior;
+      case TaylorCorrection::belowSurface: return c == SurfaceClass::interior || c == SurfaceClass::vicinity;
+      case TaylorCorrection::everywhere: return true;
+    }
+    return false;
+  }
+  std::string taylorCorrectionDescription() const {
+    switch (taylorCorrection_) {
+      case TaylorCorrection::off: return "";
+      case TaylorCorrection::interior: return ", Taylor-corrected velocity on interior particles";
+      case TaylorCorrection::belowSurface: return ", Taylor-corrected velocity on interior and vicinity particles";
+      case TaylorCorrection::everywhere: return ", Taylor-corrected velocity on every fluid particle";
+    }
+    return "";
+  }
   int reorderInterval_ = 20;
   HealthLimits health_;
   StageTimers timers_;

@@ -99,7 +99,7 @@ void Simulation<D>::checkHealth(const char* where) {
   offending_.clear();
   const char* failure = nullptr;
   double maxU = 0, sumE2 = 0, worstE = 0;
-  long nInterior = 0, worst = -1;
+  long nInterior = 0, worst = -1, fastest = -1;
   for (long i = 0; i < n; ++i) {
     if (!s_.isFluid(i)) continue;
     const bool finite = P.position[i].allFinite() && P.velocity[i].allFinite() && std::isfinite(P.pressure[i]);
@@ -112,7 +112,8 @@ void Simulation<D>::checkHealth(const char* where) {
       offending_.push_back(Index(i));
       continue;
     }
-    maxU = std::max(maxU, P.velocity[i].norm());
+    const double speed = P.velocity[i].norm();
+    if (speed > maxU) { maxU = speed; fastest = i; }
     if (P.surfaceClass(i) == SurfaceClass::interior) {
       const double e = (s_.rho0 - P.density[i]) / s_.rho0 * 100;
       sumE2 += e * e;
@@ -122,7 +123,10 @@ void Simulation<D>::checkHealth(const char* where) {
   }
   report_.maxSpeed = maxU;
   const double rms = nInterior ? std::sqrt(sumE2 / nInterior) : 0;
-  if (!failure && rms > health_.maxDensityErrorRms) {
+  if (!failure && maxU > health_.maxSpeed) {
+    failure = "speed";
+    offending_.push_back(Index(fastest));
+  } else if (!failure && rms > health_.maxDensityErrorRms) {
     failure = "density";
     offending_.push_back(Index(worst));
   }
@@ -141,6 +145,10 @@ void Simulation<D>::checkHealth(const char* where) {
   if (f == "outside")
     throw NumericalError(cat("particle id ", first, " left the domain ", where, at, " (position ",
                              P.position[offending_[0]].transpose(), "; limits set by healthChecks/domainMargin)", see));
+  if (f == "speed")
+    throw NumericalError(cat("particle id ", first, " moves at ", maxU, " m/s ", where, at, " (position ",
+                             P.position[offending_[0]].transpose(), ", ", surfaceClassName(P.surfaceClass(offending_[0])),
+                             "), above healthChecks/maxSpeed ", health_.maxSpeed, " m/s", see));
   throw NumericalError(cat("interior density error rms ", rms, " % exceeds healthChecks/maxDensityErrorRms ",
                            health_.maxDensityErrorRms, " %", at, "; worst particle id ", first, " (", worstE, " %)",
                            see));
