@@ -99,3 +99,56 @@ BOOST_AUTO_TEST_CASE(requires_allocate) {
   ADS<2> e(1.0, 1.0);
   BOOST_CHECK_THROW(e.correctPositions(f.s), std::logic_error);
 }
+
+BOOST_AUTO_TEST_CASE(partners_pair_moves_interior_partner_by_half) {
+  // partners pair: a free particle 0.8 d0 from an interior fluid particle; both move
+  // 0.1 d0 apart along the pair axis, the centroid stays. A wall partner still stays put.
+  ADS<2>::Options o;
+  o.pairwise = true;
+  {
+    Fixture<2> f;
+    f.add(Vec<2>(0, 0), ParticleType::fluid, SurfaceClass::interior);
+    f.add(Vec<2>(0, 0.8), ParticleType::fluid, SurfaceClass::free);
+    ADS<2> e(1.0, 1.0, o);
+    apply(f, e);
+    BOOST_TEST(f.s.particles.position[0].y() == -0.1, tt::tolerance(1e-12));
+    BOOST_TEST(f.s.particles.position[1].y() == 0.9, tt::tolerance(1e-12));
+    BOOST_TEST(std::abs(f.s.particles.position[0].x()) < 1e-15);
+    BOOST_TEST(e.lastActionCount() == 2);
+  }
+  {
+    Fixture<2> f;
+    f.add(Vec<2>(0, 0), ParticleType::wall, SurfaceClass::interior);
+    f.add(Vec<2>(0, 0.8), ParticleType::fluid, SurfaceClass::free);
+    ADS<2> e(1.0, 1.0, o);
+    apply(f, e);
+    BOOST_TEST(f.s.particles.position[0].norm() == 0.0);
+    BOOST_TEST(dist(f, 0, 1) == 1.0, tt::tolerance(1e-12));
+  }
+  {
+    // Two interior particles close together are not an ADS pair.
+    Fixture<2> f;
+    f.add(Vec<2>(0, 0), ParticleType::fluid, SurfaceClass::interior);
+    f.add(Vec<2>(0, 0.8), ParticleType::fluid, SurfaceClass::interior);
+    ADS<2> e(1.0, 1.0, o);
+    apply(f, e);
+    BOOST_TEST(dist(f, 0, 1) == 0.8, tt::tolerance(1e-12));
+    BOOST_TEST(e.lastActionCount() == 0);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(approaching_only_skips_separating_pairs) {
+  // approaching yes: a free pair 0.8 d0 apart acts only when (u_i - u_j) . r_ij < 0.
+  ADS<2>::Options o;
+  o.approachingOnly = true;
+  for (double sign : {-1.0, 1.0}) {
+    Fixture<2> f;
+    f.add(Vec<2>(0, 0), ParticleType::fluid, SurfaceClass::free);
+    f.add(Vec<2>(0.8, 0), ParticleType::fluid, SurfaceClass::free);
+    // sign -1: particle 0 moves toward particle 1 (closing); +1: away (separating).
+    f.s.particles.velocity[0] = Vec<2>(-sign, 0);
+    ADS<2> e(1.0, 1.0, o);
+    apply(f, e);
+    BOOST_TEST(dist(f, 0, 1) == (sign < 0 ? 1.0 : 0.8), tt::tolerance(1e-12));
+  }
+}
