@@ -26,9 +26,11 @@ inline double power(double x, double p, int whole) {
 template <int D>
 std::string ShiftingDistribution<D>::describe() const {
   if (par_.type == DistributionParameters::Type::DPS)
-    return cat("type DPS (eq. 14), C = ", par_.C, " (shift length C h), neighbours within 1.1 sqrt(D) d0");
+    return cat("type DPS (eq. 14), C = ", par_.C, " (shift length C h), neighbours within 1.1 sqrt(D) d0",
+               ", projected where |sum V grad W| h >= ", par_.projectionThreshold);
   return cat("type OPS (eqs. 11-13), C = ", par_.C, " (times h^2), Rp = ", par_.Rp, ", np = ", par_.np,
-             ", gradient ", gradientName(par_.gradient));
+             ", gradient ", gradientName(par_.gradient), ", projected where |sum V grad W| h >= ",
+             par_.projectionThreshold);
 }
 
 template <int D>
@@ -50,8 +52,15 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
   for (long i = 0; i < n; ++i) {
     if (!s.isFluid(i)) continue;
     const SurfaceClass cls = s.surfaceClass(i);
-    const bool project = cls != SurfaceClass::interior;
-    if (project && (nrm.size() != s.size() || nrm[i].squaredNorm() < 0.25)) continue;
+    // Projected: free and splash particles, and vicinity particles whose kernel-gradient
+    // sum |sum_j V grad W_ij| h (the detector's gradC) reaches projectionThreshold, i.e.
+    // whose support reaches past the surface. Deeper vicinity particles have a full
+    // neighbourhood and an ill-defined normal: they shift like interior ones.
+    const bool project = cls == SurfaceClass::free || cls == SurfaceClass::splash ||
+                         (cls == SurfaceClass::vicinity &&
+                          !(s.gradC.size() == s.size() && s.gradC[i].norm() * h < par_.projectionThreshold));
+    const Vec<D> ni = nrm.size() == s.size() ? nrm[i] : Vec<D>::Zero();
+    if (project && ni.squaredNorm() < 0.25) continue;
     // Particles without SPH(2) weights fall back to the kernel gradient.
     const G grad = (haveWeights && s.weights.order[i] != 255) ? par_.gradient : G::kernel;
     const double Ci = rho[i] * invRho0;
@@ -76,7 +85,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
       }
     }
     Vec<D> d = coeff * sum;
-    if (project) d -= nrm[i].dot(d) * nrm[i];
+    if (project) d -= ni.dot(d) * ni;
     dr[i] += d;
     ++count;
   }

@@ -16,7 +16,7 @@ template <int D>
 void SurfaceFitting<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) {
   count_ = 0;
   if (s.fitDistance.size() != s.size()) return;  // no fit this step
-  const auto& nrm = s.particles.normal;
+  const auto& nrm = s.fitNormal;
   const double coeff = (par_.smoothingSign ? -1.0 : 1.0) * par_.C * s.h;
   const long n = long(s.size());
   long count = 0;

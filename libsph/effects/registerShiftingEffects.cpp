@@ -46,6 +46,7 @@ std::unique_ptr<Effect<D>> makeDistribution(const Dictionary& d, const FlowState
     using G = DistributionParameters::Gradient;
     p.gradient = g == "kernel" ? G::kernel : g == "corrected" ? G::corrected : G::concentration;
   }
+  p.projectionThreshold = nonNegative(d, "projectionThreshold", 0.01);
   return std::make_unique<ShiftingDistribution<D>>(p);
 }
 

@@ -148,6 +148,7 @@ void Simulation<D>::buildEffects() {
   }
   if (needs_.surfaceFit) {
     s_.fitDistance.assign(s_.size(), NAN);
+    s_.fitNormal.assign(s_.size(), Vec<D>::Zero());
     s_.curvature.assign(s_.size(), NAN);
   }
   bool anyAdvection = false;

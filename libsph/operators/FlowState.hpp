@@ -35,8 +35,9 @@ struct FlowState {
   std::vector<Vec<D>> uStar;             // predicted velocity u* (fluid), Shepard-interpolated (walls)
   std::vector<Vec<D>> acceleration;      // body and viscous forces per unit mass of the predictor
 
-  // surface fit (methods.md 8.2), allocated only when an effect needs it:
-  // particles.normal is then the fitted outward normal where the fit succeeded.
+  // surface fit (methods.md 8.2), allocated only when an effect needs it. particles.normal
+  // keeps the detector's normal (OPS projects with it); the fit's normal is apart.
+  std::vector<Vec<D>> fitNormal;         // fitted outward normal, the detector's where not fitted
   std::vector<double> fitDistance;       // signed distance s_i / d0 (positive outside), NaN where not fitted
   std::vector<double> curvature;         // kappa_i * d0 (eq. 20), NaN where not computed
 

@@ -62,8 +62,8 @@ bool fitOne(const FlowState<D>& s, std::size_t i, const SurfaceFitSettings& set,
 
 template <int D>
 double curvatureSum(const FlowState<D>& s, std::size_t i) {
-  const auto& nrm = s.particles.normal;
-  if (!isUnit<D>(nrm[i])) return kNaN;
+  const auto& nrm = s.fitNormal;
+  if (nrm.size() != s.size() || !isUnit<D>(nrm[i])) return kNaN;
   const auto& nl = s.neighbours;
   const bool corrected = !s.weights.order.empty() && s.weights.order[i] != 255 && !s.weights.gradW.empty();
   double sum = 0;
@@ -82,13 +82,14 @@ void computeSurfaceFit(FlowState<D>& s, const SurfaceFitSettings& set) {
   if (s.fitDistance.size() != N) s.fitDistance.resize(N);
   if (s.curvature.size() != N) s.curvature.resize(N);
   if (s.particles.normal.size() != N) s.particles.normal.resize(N, Vec<D>::Zero());
-  auto& nrm = s.particles.normal;
+  if (s.fitNormal.size() != N) s.fitNormal.resize(N);
+  auto& nrm = s.fitNormal;
   const long n = long(N);
-  // Fit: each particle reads only its own normal (for the orientation), so the
-  // normals can be overwritten in place.
+  // Fit: starts from the detector's normal (for the orientation).
 #pragma omp parallel for schedule(dynamic, 64)
   for (long i = 0; i < n; ++i) {
     s.fitDistance[i] = kNaN;
+    nrm[i] = s.particles.normal[i];
     if (!s.isFluid(i) || !isFitted(s.surfaceClass(i)) || !isUnit<D>(nrm[i])) continue;
     Vec<D> normal = nrm[i];
     double distance = kNaN;

@@ -37,14 +37,16 @@ inline bool isFreeSurfaceClass(SurfaceClass c) { return c == SurfaceClass::free 
 
 // Fills s.fitDistance (s_i / d0) and s.curvature (kappa_i d0) for free, splash and
 // vicinity fluid particles (NaN elsewhere and where the fit failed / the normal is
-// undefined) and overwrites s.particles.normal with the fitted outward normal where the
-// fit succeeded. Requires s.particles.normal to hold the detector's normals (zero
-// vectors where undefined). Arrays are resized only if their size differs from N.
+// undefined) and s.fitNormal: the fitted outward normal where the fit succeeded, the
+// detector's normal elsewhere. Requires s.particles.normal to hold the detector's normals
+// (zero vectors where undefined); it is left as it is, because the OPS distribution term
+// projects with it: handing OPS the fitted normals instead doubled the interior density
+// error of the dam break (docs/shifting.md). Arrays are resized only if their size differs from N.
 template <int D>
 void computeSurfaceFit(FlowState<D>& s, const SurfaceFitSettings& settings = {});
 
 // The sum of eq. 20 without the factor, times d0, for particle i, with the
-// normals currently in s.particles.normal (NaN if n_i is undefined). Lets an
+// normals in s.fitNormal (NaN if n_i is undefined). Lets an
 // effect apply its own factor.
 template <int D>
 double curvatureSum(const FlowState<D>& s, std::size_t i);
