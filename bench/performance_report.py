@@ -92,6 +92,10 @@ def write(csvPath, mdPath, quick):
     add("Units: *us/particle-step* = wall time of the run divided by (steps x fluid particles), as printed by")
     add("`shizuku` at the end of a run; *CPU* = user+system time of all threads divided the same way.")
     add("")
+    add("What each numerical choice (derivative operators, shifting, PPE stabilization) costs in time and")
+    add("buys in accuracy, against known answers, and the per-stage split of every variant at the paper's")
+    add("resolution: [accuracy-cost.md](accuracy-cost.md) (`bench/accuracy-cost/run`).")
+    add("")
 
     # ---------------------------------------------------------- targets
     add("## Targets")
