@@ -70,7 +70,8 @@ GROUPS = [("neighbours", ["neighbours"]), ("weights", ["weights"]), ("density", 
           ("freeSurface+fit", ["freeSurface", "surfaceFit"]), ("predictor", ["predictor"]),
           ("ppeAssembly", ["ppeAssembly"]), ("ppeSolve", ["ppeSolve"]), ("corrector", ["corrector"]),
           ("advection+xsph+ads", ["advection", "xsph", "ads"]),
-          ("shifting", ["shifting"]), ("other", ["functionObjects", "output"])]
+          ("shifting", ["shifting", "shifting/distribution", "shifting/volumeCorrection", "shifting/surfaceFitting"]),
+          ("other", ["functionObjects", "output"])]
 
 
 def write(csvPath, mdPath, quick):
