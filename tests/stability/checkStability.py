@@ -24,7 +24,9 @@ It asserts, each as its own line:
     the top of a side wall and down outside it);
  4. no particle inside a wall: in every time directory no fluid particle centre lies
     beyond a closed face of a wall region of system/particlesDict and within its layers,
-    more than wallTolerance d0;
+    more than wallTolerance d0 (the face's slab: its layers across; along, the box plus
+    the layers of closed neighbouring faces, so a particle resting on the top edge of a
+    side wall under an open top is not inside it);
  5. the fluid volume stays within `volume/rel` of its initial value (every sample);
  6. the kinetic energy is bounded by what the physics allows. Nothing feeds energy in
     (fixed walls, constant gravity), so the total energy E = E_k + E_p, E_p = -sum m g.x,
@@ -191,11 +193,21 @@ def main():
         for wname, lo, hi, opened, thick in walls:
             axes = ["left", "right", "bottom", "top", "front", "back"]
             for k in range(dim):
+                # The face's slab spans the box along the other axes, plus the layers where
+                # the adjacent face is closed (corners); a particle above the end of a side
+                # wall under an open top (resting on its top edge) is not inside it.
+                along = np.ones(len(x), dtype=bool)
+                for j in range(dim):
+                    if j != k:
+                        below = 0.0 if axes[2 * j] in opened else thick
+                        above = 0.0 if axes[2 * j + 1] in opened else thick
+                        along &= (x[:, j] >= lo[j] - below) & (x[:, j] <= hi[j] + above)
                 for side, beyond in ((axes[2 * k], lo[k] - x[:, k]), (axes[2 * k + 1], x[:, k] - hi[k])):
                     if side in opened:
                         continue
+                    beyond = np.where(along, beyond, -np.inf)
                     # within the wall's layers: inside the wall; past them: out of the container
-                    inside = beyond[beyond <= thick]
+                    inside = beyond[(beyond <= thick) & np.isfinite(beyond)]
                     depth = float(np.max(inside)) if len(inside) else 0.0
                     if depth > worst_wall[0]:
                         worst_wall = (depth, tname, f"{wname} {side}")
