@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Order of convergence in the time step (issue 4, item 9; label `regression`).
 
-usage: timeOrder.py CASE WORK --shizuku BIN [--levels 5] [--endTime 0.4] [--threads 2]
+usage: timeOrder.py CASE WORK --shizuku BIN --compare SHIZUKUCOMPARE [--levels 5]
+                    [--endTime 0.4] [--threads 2]
 
 Runs the Poiseuille start-up case (CASE = tests/cases/poiseuilleStartup) at its spacing
 with dt = dt0, dt0/2, ..., dt0/2^(levels-1) to endTime, the probes sampled at the same
@@ -24,21 +25,7 @@ import shutil
 import subprocess
 import sys
 
-
-def set_entry(text, key, value):
-    new, n = re.subn(rf"(?m)^{key}\s+[^;]*;", f"{key} {value};", text)
-    if n != 1:
-        raise SystemExit(f"timeOrder: no single '{key}' entry")
-    return new
-
-
-def probes(case):
-    rows = []
-    for line in open(os.path.join(case, "postProcessing", "profile", "0", "U")):
-        if line.startswith("#") or not line.strip():
-            continue
-        rows.append([float(v) for v in re.findall(r"[-+0-9.eE]+|nan", line.replace("(", " ").replace(")", " "))])
-    return rows
+from runCase import copy_case, load_compare, set_key
 
 
 def main():
@@ -46,24 +33,28 @@ def main():
     p.add_argument("case")
     p.add_argument("work")
     p.add_argument("--shizuku", required=True)
+    p.add_argument("--compare", required=True)
     p.add_argument("--levels", type=int, default=5)
     p.add_argument("--endTime", default="0.4")
     p.add_argument("--threads", type=int, default=2)
     a = p.parse_args()
+    cm = load_compare(a.compare)
     root = os.path.join(a.work, "timeOrder")
     shutil.rmtree(root, ignore_errors=True)
-    os.makedirs(root)
     control = open(os.path.join(a.case, "system", "controlDict")).read()
     dt0 = float(re.search(r"(?m)^deltaT\s+([^;\s]+)", control).group(1))
     interval = int(re.search(r"profile\s*\{[^}]*writeInterval\s+(\d+)", control).group(1))
     results = []
     for k in range(a.levels):
         case = os.path.join(root, f"dt{k}")
-        shutil.copytree(a.case, case, ignore=shutil.ignore_patterns("checks", "tolerances*", "README.md", "*.py"))
-        text = set_entry(set_entry(control, "deltaT", repr(dt0 / 2 ** k)), "endTime", a.endTime)
+        copy_case(a.case, case)
+        path = os.path.join(case, "system", "controlDict")
+        set_key(path, "deltaT", repr(dt0 / 2 ** k))
+        set_key(path, "endTime", a.endTime)
         # the profile probes every `interval` steps at dt0: sample at the same times
-        text = re.sub(r"(profile\s*\{[^}]*writeInterval\s+)(\d+)", lambda m: m.group(1) + str(interval * 2 ** k), text)
-        open(os.path.join(case, "system", "controlDict"), "w").write(text)
+        text = re.sub(r"(profile\s*\{[^}]*writeInterval\s+)(\d+)", lambda m: m.group(1) + str(interval * 2 ** k),
+                      open(path).read())
+        open(path, "w").write(text)
         schemes = os.path.join(case, "system", "sphSchemes")
         s = open(schemes).read()
         s = re.sub(r"(?s)\nshifting\s*\{.*?\n\}", "\n", s)
@@ -76,15 +67,17 @@ def main():
             print(f"FAIL dt = {dt0 / 2 ** k:g}: exit status {rc} (log: {case}/log.shizuku)")
             print("0 passed, 1 failed")
             sys.exit(1)
-        results.append((dt0 / 2 ** k, probes(case)))
-    dtf, finest = results[-1]
+        cols = cm.Series(case).columns
+        names = sorted(c for c in cols if c.startswith("profile/U/"))
+        results.append((dt0 / 2 ** k, cols[names[0]][0], [cols[c][1] for c in names]))
+    dtf, tf, finest = results[-1]
     errors = []
-    for dt, rows in results[:-1]:
-        if len(rows) != len(finest) or any(abs(r[0] - f[0]) > 1e-9 for r, f in zip(rows, finest)):
+    for dt, t, values in results[:-1]:
+        if len(t) != len(tf) or abs(t - tf).max() > 1e-9:
             print(f"FAIL dt = {dt:g}: probe times differ from the finest run's")
             print("0 passed, 1 failed")
             sys.exit(1)
-        e = max(abs(x - y) for r, f in zip(rows, finest) for x, y in zip(r[1:], f[1:]) if x == x and y == y)
+        e = max(float(abs(v - f)[(v == v) & (f == f)].max()) for v, f in zip(values, finest))
         errors.append((dt, e))
     for (dt, e), nxt in zip(errors, errors[1:] + [None]):
         ratio = f", ratio {e / nxt[1]:.2f} (first order: {(dt - dtf) / (nxt[0] - dtf):.2f})" if nxt else ""
