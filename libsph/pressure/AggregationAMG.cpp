@@ -1,6 +1,8 @@
 // Smoothed-aggregation AMG preconditioner (see AggregationAMG.hpp for the method).
 #include "pressure/AggregationAMG.hpp"
 #include "core/Log.hpp"
+#include "core/types.hpp"
+#include <string>
 #include <cmath>
 #include <omp.h>
 
@@ -164,9 +166,18 @@ void AggregationAMG::build(const SparseMatrixR& A) {
     std::vector<int> agg;
     const int nc = (n <= kCoarsest || l + 1 >= kMaxLevels) ? 0 : aggregate(*cur, d, agg);
     if (nc == 0 || nc > 0.9 * n) {
-      // Coarsest level: dense LU (rows left out of aggregation are identity-like and
-      // still solved exactly here).
-      coarse_.compute(Eigen::MatrixXd(*cur));
+      // Coarsest level, solved exactly (rows left out of aggregation are identity-like
+      // and solved here too): dense LU when small, sparse LU when aggregation stalled.
+      coarsestRows_ = n;
+      coarsestDense_ = n <= kCoarsest;
+      if (coarsestDense_) {
+        coarse_.compute(Eigen::MatrixXd(*cur));
+      } else {
+        const Eigen::SparseMatrix<double> Ac = *cur;  // column major for SparseLU
+        sparseCoarse_.compute(Ac);
+        if (sparseCoarse_.info() != Eigen::Success)
+          throw NumericalError("AMG: sparse LU of the coarsest level (" + std::to_string(n) + " rows) failed");
+      }
       return;
     }
     std::vector<Eigen::Triplet<double>> t;
@@ -234,7 +245,8 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A) const {
   if (l + 1 == int(levels_.size())) {
     Eigen::Map<const Eigen::VectorXd> b(L.b.data(), n);
     Eigen::Map<Eigen::VectorXd> x(L.x.data(), n);
-    x.noalias() = coarse_.solve(b);
+    if (coarsestDense_) x.noalias() = coarse_.solve(b);
+    else x = sparseCoarse_.solve(b);  // only a stalled (split-up) system gets here
     return;
   }
   double* x = L.x.data();

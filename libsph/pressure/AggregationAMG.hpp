@@ -7,7 +7,10 @@
 //     aggregation (root + strong neighbours, then leftovers join the aggregate of
 //     their largest-coupled neighbour); tentative prolongation P0 = aggregate indicator; smoothed
 //     P = (I - omega D^-1 A) P0, omega = 2/3; restriction R = P^T; coarse
-//     A_c = R A P; recursively until <= 400 unknowns (dense LU there).
+//     A_c = R A P; recursively until <= 400 unknowns (dense LU there). If the
+//     aggregation stalls on a larger level (a flow broken into many small
+//     clusters: a dispersed splash), that level is the coarsest and gets a sparse
+//     LU instead: a dense one would need 8 n^2 bytes and n^3 operations.
 //     Rows with no off-diagonal entry (p = 0 rows) are left out of the coarse grids.
 //   cycle: one hybrid Gauss-Seidel sweep (Gauss-Seidel inside each thread's
 //     contiguous row block, Jacobi across blocks) forward before and backward
@@ -19,6 +22,7 @@
 #pragma once
 #include "pressure/Preconditioner.hpp"
 #include <Eigen/Dense>
+#include <Eigen/SparseLU>
 
 namespace shizuku {
 
@@ -34,6 +38,9 @@ class AggregationAMG final : public Preconditioner {
   long setups() const { return setups_; }
   // Sum of the nonzeros of all levels over those of the finest (last setup).
   double operatorComplexity() const;
+  // Rows of the coarsest level and whether it is solved by the dense LU.
+  int coarsestRows() const { return coarsestRows_; }
+  bool coarsestDense() const { return coarsestDense_; }
 
  private:
   struct Level {
@@ -52,7 +59,10 @@ class AggregationAMG final : public Preconditioner {
   long setups_ = 0;
   const SparseMatrixR* fine_ = nullptr;  // this step's matrix (alive during the solve)
   std::vector<Level> levels_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> coarse_;
+  int coarsestRows_ = 0;
+  bool coarsestDense_ = true;
+  Eigen::PartialPivLU<Eigen::MatrixXd> coarse_;                                // <= kCoarsest rows
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> sparseCoarse_;  // stalled
 };
 
 }  // namespace shizuku

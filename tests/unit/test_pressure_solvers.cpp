@@ -12,6 +12,7 @@
 #define BOOST_TEST_MODULE pressure_solvers
 #include <boost/test/unit_test.hpp>
 #include "core/types.hpp"
+#include "pressure/AggregationAMG.hpp"
 #include "pressure/Krylov.hpp"
 #include "pressure/LinearSolver.hpp"
 #include <cmath>
@@ -175,6 +176,39 @@ BOOST_AUTO_TEST_CASE(direct_solvers_reuse_the_analysis_only_for_the_same_pattern
       }
     }
   }
+}
+
+// A flow broken into splash (the rotating patch past omega t = 5): small clusters whose
+// rows couple only weakly, so aggregation stalls (every row its own aggregate). The
+// stalled level is then the coarsest; it used to get a dense LU (8 n^2 bytes: 0.8 GB
+// and minutes at 10 000 particles, seen in long.rotatingPatch). It must get a sparse LU
+// and, being the only level, be an exact solve.
+BOOST_AUTO_TEST_CASE(amg_solves_a_dispersed_system_with_a_sparse_coarsest_level) {
+  const int n = 20000;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, i, 1.0);
+    t.emplace_back(i, i ^ 1, -0.01);  // pairs, coupled below the strength threshold
+  }
+  SparseMatrixR A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  const Eigen::VectorXd xe = exactX(A, 5), b = A * xe;
+  AggregationAMG amg;
+  BOOST_REQUIRE(amg.setup(A));
+  BOOST_TEST(amg.levels() == 1);
+  BOOST_TEST(amg.coarsestRows() == n);
+  BOOST_TEST(!amg.coarsestDense());
+  Eigen::VectorXd z(n);
+  amg.apply(b.data(), z.data());
+  BOOST_TEST((z - xe).lpNorm<Eigen::Infinity>() < 1e-13);
+  // A connected PPE-like system still coarsens down to a small dense level.
+  const SparseMatrixR B = ppeLike(60, 0.05, 0.01);
+  AggregationAMG amg2;
+  BOOST_REQUIRE(amg2.setup(B));
+  BOOST_TEST(amg2.levels() > 1);
+  BOOST_TEST(amg2.coarsestDense());
+  BOOST_TEST(amg2.coarsestRows() <= 400);
 }
 
 BOOST_AUTO_TEST_CASE(warm_start_from_the_solution_needs_no_iteration) {
