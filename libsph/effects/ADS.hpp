@@ -15,7 +15,7 @@
 //   partners pair     both fluid partners of a pair with a near-surface particle move by
 //                     half (the pair's centroid stays: no outward push of the surface);
 //   approaching yes   only pairs closing in, (u_i - u_j) . r_ij < 0, act.
-// Reads (system/sphSchemes, ads): distance 1; (times d0)  C 1;  partners surface;  approaching no;
+// Reads (system/sphSchemes, ads): distance 0.95; (times d0; docs/shifting.md, "ADS distance")  C 1;  partners surface;  approaching no;
 #pragma once
 #include "effects/Effect.hpp"
 
