@@ -161,10 +161,13 @@ def write(csvPath, mdPath, quick):
             dn = float(s320["total"]) - float(s80["total"])
             marg = f"; marginal {f(dm / dn)} B (80k to 320k)"
         add(f"| <= 2 KB memory per particle | {f(bpp)} B per particle (peak RSS / all particles, {s320['case']}){marg} "
-            f"| {'yes' if bpp <= 2048 else 'no'} | per-pair arrays dominate: ~20 pairs per particle, each "
-            "with index, distance, separation vector and kernel, gradient, Laplacian weights (~60-80 B per pair, "
-            "1.2-1.6 KB per particle), plus the PPE matrix and AMG levels (~0.5 KB). Single-precision pair "
-            "geometry, or recomputing separations instead of storing them, would move it below 2 KB |")
+            f"| {'yes' if bpp <= 2048 else 'no'} | heaptrack, 2026-11-30 (dam break d0 = 5 mm, 20.8k particles, "
+            "heap peak 58.9 MB = 2.83 KB per particle): neighbour list (index, r_ij, abs r_ij, search scratch) 590 B, "
+            "pair weights (W, corrected gradient, Laplacian) 590 B, PPE matrix 250 B, AMG hierarchy with the "
+            "temporaries of its setup (Eigen sparse products) about 900 B at the peak, Krylov vectors 65 B, fields "
+            "the rest. What would move it: recomputing r_ij and its length from the positions instead of storing "
+            "them (-440 B), an AMG setup without Eigen's product temporaries (-400 B at the peak); single-precision "
+            "AMG levels were tried (no speed gain at 20k: the levels fit in cache) and not kept |")
     add("")
 
     # ---------------------------------------------------------- throughput
@@ -261,10 +264,15 @@ def write(csvPath, mdPath, quick):
     add("solve with the hierarchy kept 10 steps, 38-44 ms rebuilt every step; its V-cycle is single-threaded")
     add("(the Debian build has no OpenMP), so the own AMG, which uses both cores, is the default.")
     add("")
-    add("OpenMP wait policy: on a loaded machine threads that spin at barriers take the core their partner")
-    add("needs. Measured (AMG solve, 86k unknowns, 2 threads, load 3.4): 1586 ms per solve with the default")
-    add("(spinning) policy, 148 ms with `OMP_WAIT_POLICY=PASSIVE`; this benchmark sets PASSIVE unless the")
-    add("variable is given. On an idle machine the difference is small.")
+    policy = os.environ.get("OMP_WAIT_POLICY", "")
+    add(f"OpenMP wait policy of these runs: {('`OMP_WAIT_POLICY=' + policy + '`') if policy else 'the default (libgomp: a waiting thread spins for a while, then sleeps)'}.")
+    add("It matters. On an idle machine a sleeping thread has to be woken at each of the ~100 parallel regions")
+    add("of a PPE solve: measured 2026-11-30 (load 0.3, K&O 20k systems, 2 threads) 11.4 ms per AMG solve with")
+    add("the default policy against 17.1 ms with `OMP_WAIT_POLICY=PASSIVE` (one thread: 15.0 ms), and the whole")
+    add("step 1.15 against 1.63 us per particle-step. On a loaded machine it is the other way round: a")
+    add("spinning thread takes the core its partner needs (AMG solve, 86k unknowns, load 3.4: 1586 ms with")
+    add("the default, 148 ms PASSIVE). So `bench/run-performance` keeps the policy it is given (measure on an")
+    add("idle machine, as users run), and the test suite sets PASSIVE (ctest runs two tests at once).")
     add("")
 
     # ---------------------------------------------------------- time step
@@ -339,10 +347,11 @@ def write(csvPath, mdPath, quick):
     add("  reordering; a parallel setup, or keeping the hierarchy across reorderings by permuting it, would cut")
     add("  the AMG-everyStep / AMG difference further. A looser tolerance (1e-6) would cut iterations but")
     add("  changes accuracy and was not adopted.")
-    add("- The other stages (SPH2 weights, shifting, free surface, ADS) each cost about as much as the whole step")
-    add("  budget of the 1.5 us target; they belong to their areas and were not changed here.")
+    add("- The AMG's levels below 8192 rows run on one thread (measured 2026-11-30 at 20k, idle machine, PASSIVE: lowering")
+    add("  the bound to 2048 or 512 rows did not speed up the 2-thread solve); single-precision levels (half the")
+    add("  bytes per cycle) gave no gain at 20k either, where the levels fit in cache, and were not kept.")
     add("- Measurements on a loaded shared machine inflate the 2-thread wall times; rerun")
-    add("  `bench/run-performance` when `uptime` shows a load below 2.")
+    add("  `bench/run-performance` when `uptime` shows a load below 0.5, with the OpenMP policy users get.")
     add("")
     with open(mdPath, "w") as fo:
         fo.write("\n".join(L) + "\n")

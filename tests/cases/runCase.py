@@ -79,6 +79,36 @@ def copy_case(src, dst):
         shutil.copytree(os.path.join(src, name), os.path.join(dst, name))
 
 
+def remove_shifting(case):
+    """Switch off the particle shift, ADS and XSPH of a copied case (the bare projection method)."""
+    schemes = os.path.join(case, "system", "sphSchemes")
+    with open(schemes) as f:
+        s = f.read()
+    s = re.sub(r"(?s)\nshifting\s*\{.*?\n\}", "\n", s)
+    s = re.sub(r"\n\s*(ads|xsph)\s*\{[^}]*\}", "\n", s)
+    with open(schemes, "w") as f:
+        f.write(s)
+
+
+def run_or_fail(shizuku, case, threads, what):
+    """Run the solver on a case (log in case/log.shizuku); on a non-zero exit print a FAIL
+    line naming `what` and the summary line, and exit 1."""
+    with open(os.path.join(case, "log.shizuku"), "w") as log:
+        rc = subprocess.run([shizuku, "-case", case, "-threads", str(threads)], stdout=log,
+                            stderr=subprocess.STDOUT).returncode
+    if rc != 0:
+        print(f"FAIL {what}: exit status {rc} (log: {case}/log.shizuku)")
+        print("0 passed, 1 failed")
+        sys.exit(1)
+
+
+def finish(ok, what):
+    """Print one check line and the summary line of a single-check script, and exit."""
+    print(("ok   " if ok else "FAIL ") + what)
+    print(f"{1 if ok else 0} passed, {0 if ok else 1} failed")
+    sys.exit(0 if ok else 1)
+
+
 def update_reference(cmp_mod, src, case, checks):
     """Copy the run's postProcessing files that the reference checks compare into the
     case's reference folder (only those files: a reference stays small)."""

@@ -22,10 +22,9 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 
-from runCase import copy_case, load_compare, set_key
+from runCase import copy_case, finish, load_compare, remove_shifting, run_or_fail, set_key
 
 
 def main():
@@ -55,18 +54,8 @@ def main():
         text = re.sub(r"(profile\s*\{[^}]*writeInterval\s+)(\d+)", lambda m: m.group(1) + str(interval * 2 ** k),
                       open(path).read())
         open(path, "w").write(text)
-        schemes = os.path.join(case, "system", "sphSchemes")
-        s = open(schemes).read()
-        s = re.sub(r"(?s)\nshifting\s*\{.*?\n\}", "\n", s)
-        s = re.sub(r"\n\s*(ads|xsph)\s*\{[^}]*\}", "\n", s)
-        open(schemes, "w").write(s)
-        with open(os.path.join(case, "log.shizuku"), "w") as log:
-            rc = subprocess.run([a.shizuku, "-case", case, "-threads", str(a.threads)], stdout=log,
-                                stderr=subprocess.STDOUT).returncode
-        if rc != 0:
-            print(f"FAIL dt = {dt0 / 2 ** k:g}: exit status {rc} (log: {case}/log.shizuku)")
-            print("0 passed, 1 failed")
-            sys.exit(1)
+        remove_shifting(case)
+        run_or_fail(a.shizuku, case, a.threads, f"dt = {dt0 / 2 ** k:g}")
         cols = cm.Series(case).columns
         names = sorted(c for c in cols if c.startswith("profile/U/"))
         results.append((dt0 / 2 ** k, cols[names[0]][0], [cols[c][1] for c in names]))
@@ -94,11 +83,8 @@ def main():
         if best is None or res < best[1]:
             best = (pp, res)
     order = best[0]
-    ok = 0.9 <= order <= 1.1
-    print(("ok   " if ok else "FAIL ") + f"order in dt {order:.2f} (expected 1: first-order projection; "
-          f"accepted 0.9 to 1.1), {a.levels} time steps from {dt0:g} s to {dtf:g} s")
-    print(f"{1 if ok else 0} passed, {0 if ok else 1} failed")
-    sys.exit(0 if ok else 1)
+    finish(0.9 <= order <= 1.1, f"order in dt {order:.2f} (expected 1: first-order projection; "
+           f"accepted 0.9 to 1.1), {a.levels} time steps from {dt0:g} s to {dtf:g} s")
 
 
 if __name__ == "__main__":

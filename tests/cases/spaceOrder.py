@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""Order of convergence in the particle spacing (issue 4, item 9; label `regression`).
+
+usage: spaceOrder.py CASE WORK --shizuku BIN --compare SHIZUKUCOMPARE
+                     [--levels 10,20,40] [--shifting on|off] [--threads 2] [--min-order P]
+
+Runs the Poiseuille start-up case (CASE = tests/cases/poiseuilleStartup, channel height
+H = 0.1 m) at H/d0 = 10, 20, 40 with dt scaled like d0^2 (the viscous limit, so the time
+error shrinks at least as fast as a second-order spatial error), and measures the error of
+the probe velocities at y = H/4, H/2, 3H/4 against the analytic series solution (the same
+series as the case's makeAnalytic.py):
+    e_k = max over probes and over 0.2 <= t <= 2 s of |u_k(y, t) - u(y, t)|.
+The order is the least-squares slope of log e_k against log d0. With --shifting off the
+shift, ADS and XSPH are switched off (the bare projection method); on, the full method.
+Asserts order >= --min-order (default 0.9).
+Measured 2026-11-30 (1 thread, machine shared; 4.5 s for the three runs):
+  shifting off, H/d0 = 10, 20, 40: e = 1.15e-4, 4.79e-5, 2.15e-5 m/s, ratios 2.40, 2.23
+                (orders 1.26, 1.16), fitted order 1.21;
+  shifting on,  H/d0 = 10, 20, 40, 80: e = 1.15e-4, 4.64e-5, 2.07e-5, 1.06e-5 m/s, ratios
+                2.49, 2.24, 1.95 (orders 1.32, 1.16, 0.96), fitted 1.15 (100 s).
+The method is first order in d0 on this wall-bounded flow, although the SPH2 operators
+are second order on their own (tests/unit/test_operators_convergence); the likely limit is
+the no-slip wall treatment (dummy layers), not yet investigated. The test asserts order >= 0.9
+(the measured 1.21 with a margin for the two-level scatter): a scheme that stopped
+converging (order near 0), or one that converged more slowly than first order, fails."""
+import argparse
+import math
+import os
+import re
+import shutil
+
+from runCase import copy_case, finish, load_compare, remove_shifting, run_or_fail, set_key
+
+H, NU, G = 0.1, 1e-3, 8e-3  # the case's channel height, viscosity, body force (README.md)
+
+
+def exact(y, t, terms=400):
+    u = G * y * (H - y) / (2 * NU)
+    for n in range(1, terms, 2):
+        u -= 4 * G * H * H / (NU * math.pi ** 3 * n ** 3) * math.sin(n * math.pi * y / H) * \
+            math.exp(-n * n * math.pi ** 2 * NU * t / (H * H))
+    return u
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("case")
+    p.add_argument("work")
+    p.add_argument("--shizuku", required=True)
+    p.add_argument("--compare", required=True)
+    p.add_argument("--levels", default="10,20,40")
+    p.add_argument("--shifting", choices=("on", "off"), default="off")
+    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--min-order", type=float, default=0.9)
+    a = p.parse_args()
+    cm = load_compare(a.compare)
+    root = os.path.join(a.work, "spaceOrder")
+    shutil.rmtree(root, ignore_errors=True)
+    control = open(os.path.join(a.case, "system", "controlDict")).read()
+    dt0 = float(re.search(r"(?m)^deltaT\s+([^;\s]+)", control).group(1))
+    d00 = float(re.search(r"(?m)^spacing\s+([^;\s]+)", open(os.path.join(a.case, "system", "particlesDict")).read()).group(1))
+    results = []
+    for n in (int(v) for v in a.levels.split(",")):
+        d0 = H / n
+        dt = dt0 * (d0 / d00) ** 2
+        steps = int(round(2.0 / dt))
+        case = os.path.join(root, f"H{n}")
+        copy_case(a.case, case)
+        set_key(os.path.join(case, "system", "particlesDict"), "spacing", repr(d0))
+        path = os.path.join(case, "system", "controlDict")
+        set_key(path, "deltaT", repr(dt))
+        # probes every 0.02 s whatever dt is
+        every = max(1, int(round(0.02 / dt)))
+        text = re.sub(r"(profile\s*\{[^}]*writeInterval\s+)(\d+)", lambda m: m.group(1) + str(every), open(path).read())
+        open(path, "w").write(text)
+        if a.shifting == "off":
+            remove_shifting(case)
+        run_or_fail(a.shizuku, case, a.threads, f"H/d0 = {n}")
+        cols = cm.Series(case).columns
+        names = sorted(c for c in cols if c.startswith("profile/U/"))
+        e = 0.0
+        for c in names:
+            m = re.match(r"profile/U/point(\d+)_x$", c)
+            if not m:
+                continue
+            t, u = cols[c]
+            y = (0.0125, 0.025, 0.05, 0.075)[int(m.group(1))]  # the case's probe points
+            if y < 0.02:
+                continue  # y = H/8 is 1.25 d0 from the wall at H/d0 = 10 (README.md)
+            for ti, ui in zip(t, u):
+                if 0.2 <= ti <= 2.0 + 1e-9 and ui == ui:
+                    e = max(e, abs(ui - exact(y, ti)))
+        results.append((d0, e, dt, steps))
+        print(f"     H/d0 = {n}: dt = {dt:.3g} s ({steps} steps), max |u - u_exact| = {e:.3g} m/s")
+    for (d, e, _, _), (d2, e2, _, _) in zip(results, results[1:]):
+        print(f"     ratio {e / e2:.2f} for d0 {d:.4g} -> {d2:.4g} m (order {math.log(e / e2) / math.log(d / d2):.2f})")
+    xs = [math.log(d) for d, _, _, _ in results]
+    ys = [math.log(e) for _, e, _, _ in results]
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    order = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+    finish(order >= a.min_order,
+           f"order in d0 {order:.2f} (shifting {a.shifting}; accepted >= {a.min_order}), H/d0 = {a.levels}")
+
+
+if __name__ == "__main__":
+    main()
