@@ -1,12 +1,13 @@
 // Advective dynamic stabilization (methods.md 9); formula in ADS.hpp.
 #include "effects/ADS.hpp"
+#include <algorithm>
 #include <stdexcept>
 
 namespace shizuku {
 
 template <int D>
 std::string ADS<D>::describe() const {
-  return cat("distance = ", distance_, " d0, C = ", C_, ", partners ", o_.pairwise ? "pair" : "surface",
+  return cat("distance = ", distance_, " d0 (wall partners ", o_.wallDistance, " d0), C = ", C_, ", partners ", o_.pairwise ? "pair" : "surface",
              o_.approachingOnly ? ", approaching pairs only" : "", ", on free-surface and vicinity particles");
 }
 
@@ -14,7 +15,8 @@ template <int D>
 void ADS<D>::correctPositions(FlowState<D>& s) {
   if (delta_.size() != s.size()) throw std::logic_error("ads: allocate() was not called for this particle count");
   const auto& nl = s.neighbours;
-  const double dAds = distance_ * s.d0;
+  const double dFluid = distance_ * s.d0, dWall = o_.wallDistance * s.d0;
+  const double dMax = std::max(dFluid, dWall);
   const long n = long(s.size());
   const auto& u = s.particles.velocity;
   auto moved = [&](Index j) { return s.isFluid(j) && nearSurface(s.surfaceClass(j)); };
@@ -28,8 +30,10 @@ void ADS<D>::correctPositions(FlowState<D>& s) {
     if (mi || (o_.pairwise && s.isFluid(Index(i)))) {
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const double r = nl.r[k];
-        if (!(r < dAds) || !(r > 0)) continue;
+        if (!(r < dMax) || !(r > 0)) continue;
         const Index j = nl.j[k];
+        const double dAds = s.isFluid(j) ? dFluid : dWall;
+        if (!(r < dAds)) continue;
         const bool mj = moved(j);
         if (!mi && !mj) continue;
         if (o_.approachingOnly && (u[i] - u[j]).dot(nl.rij[k]) >= 0) continue;

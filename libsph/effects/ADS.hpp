@@ -15,7 +15,9 @@
 //   partners pair     both fluid partners of a pair with a near-surface particle move by
 //                     half (the pair's centroid stays: no outward push of the surface);
 //   approaching yes   only pairs closing in, (u_i - u_j) . r_ij < 0, act.
-// Reads (system/sphSchemes, ads): distance 0.95; (times d0; docs/shifting.md, "ADS distance")  C 1;  partners surface;  approaching no;
+//   wallDistance      d_ADS for a wall partner (times d0), default: `distance`
+//                     (1 pushed the coarse dam break and drop over-dense, docs/shifting.md).
+// Reads (system/sphSchemes, ads): distance 0.95; wallDistance = distance; (times d0; docs/shifting.md, "ADS distance")  C 1;  partners surface;  approaching no;
 #pragma once
 #include "effects/Effect.hpp"
 
@@ -27,8 +29,11 @@ class ADS final : public Effect<D> {
   struct Options {
     bool pairwise = false;         // partners pair
     bool approachingOnly = false;  // approaching yes
+    double wallDistance = -1;      // d_ADS / d0 for wall partners; < 0: the same as distance
   };
-  ADS(double distance, double C, Options o = {}) : distance_(distance), C_(C), o_(o) {}
+  ADS(double distance, double C, Options o = {}) : distance_(distance), C_(C), o_(o) {
+    if (o_.wallDistance < 0) o_.wallDistance = distance;
+  }
   std::string name() const override { return "ads"; }
   EffectStage stage() const override { return EffectStage::postAdvection; }
   std::string describe() const override;

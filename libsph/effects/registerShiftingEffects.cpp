@@ -80,6 +80,7 @@ std::unique_ptr<Effect<D>> makeADS(const Dictionary& d, const FlowState<D>&) {
   typename ADS<D>::Options o;
   o.pairwise = d.getOptionOr("partners", {"surface", "pair"}, "surface") == "pair";
   o.approachingOnly = d.getSwitchOr("approaching", false);
+  o.wallDistance = positive(d, "wallDistance", distance);
   return std::make_unique<ADS<D>>(distance, C, o);
 }
 

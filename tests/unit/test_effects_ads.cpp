@@ -4,6 +4,7 @@
 #define BOOST_TEST_MODULE effects_ads
 #include <boost/test/unit_test.hpp>
 #include "effects/ADS.hpp"
+#include <algorithm>
 #include "test_effects_fixture.hpp"
 
 using namespace shizuku;
@@ -150,5 +151,27 @@ BOOST_AUTO_TEST_CASE(approaching_only_skips_separating_pairs) {
     ADS<2> e(1.0, 1.0, o);
     apply(f, e);
     BOOST_TEST(dist(f, 0, 1) == (sign < 0 ? 1.0 : 0.8), tt::tolerance(1e-12));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(wall_partners_keep_their_own_distance) {
+  // distance 0.95: a free pair 0.97 d0 apart is left alone; a free particle 0.97 d0 from a
+  // wall particle is pushed to wallDistance from it when that is larger.
+  for (double wallDistance : {1.0, 0.95}) {
+    Fixture<2> f;
+    f.add(Vec<2>(0, 0), ParticleType::wall, SurfaceClass::interior);
+    f.add(Vec<2>(0, 0.97), ParticleType::fluid, SurfaceClass::free);
+    f.add(Vec<2>(5, 0), ParticleType::fluid, SurfaceClass::free);
+    f.add(Vec<2>(5, 0.97), ParticleType::fluid, SurfaceClass::free);
+    ADS<2>::Options o;
+    o.wallDistance = wallDistance;
+    ADS<2> e(0.95, 1.0, o);
+    apply(f, e);
+    BOOST_TEST_CONTEXT("wallDistance " << wallDistance) {
+      BOOST_TEST(dist(f, 0, 1) == std::max(0.97, wallDistance), tt::tolerance(1e-12));
+      BOOST_TEST(f.s.particles.position[0].norm() == 0.0);
+      BOOST_TEST(dist(f, 2, 3) == 0.97, tt::tolerance(1e-12));
+      BOOST_TEST(e.lastActionCount() == (wallDistance > 0.97 ? 1 : 0));
+    }
   }
 }
