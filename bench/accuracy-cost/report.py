@@ -513,7 +513,7 @@ def write_doc(rows, stages, info):
         "surfaceFitting { C 1e-4; maxCurvature 0.2; minDistance 0.15; maxDistance 0.6; } maxShift 0.1;`; "
         "`OPS` = the distribution term alone; `none` = no `shifting` entry. Stabilization `on` = "
         "`pressureStabilization { type densityInvariant; alpha 1e-3; }`. Every variant keeps the tutorials' "
-        "cubic spline kernel (h = 1.2 d0), `ads { }` and `xsph { epsilon 0.5; }`.")
+        "cubic spline kernel (h = 1.2 d0), `ads { }` (ADS at 0.95 d0, the default since 2026-11-30) and `xsph { epsilon 0.5; }`.")
     add("")
     add("## Cases and error measures")
     add("")
