@@ -291,13 +291,14 @@ void Simulation<D>::analyse() {
   { StageTimers::Scope t(timers_, st_.freeSurface); freeSurface_->detect(s_); }
   {
     StageTimers::Scope t(timers_, st_.weights);
-    // Fluid rows: 1 = the full operator, 2 = free-surface rows (first order at most).
+    // Fluid rows: 1 = the full operator, 2 = free-surface rows (first order at most),
+    // 3 = splash rows (standard weights; DerivativeOperator.hpp).
     const long n = long(s_.size());
     weightRows_.resize(n);
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
       const SurfaceClass c = P.surfaceClass(i);
-      weightRows_[i] = !s_.isFluid(i) ? 0 : (c == SurfaceClass::free || c == SurfaceClass::splash) ? 2 : 1;
+      weightRows_[i] = !s_.isFluid(i) ? 0 : c == SurfaceClass::splash ? 3 : c == SurfaceClass::free ? 2 : 1;
     }
     operator_->computeWeights(s_.kernel, s_.V(), s_.neighbours, weightRows_, s_.weights);
   }

@@ -19,9 +19,10 @@ class CorrectedOperator final : public DerivativeOperator<D> {
                       const std::vector<std::uint8_t>& computeFor, PairWeights<D>& out) const override {
     const double h = kernel.h();
     const weights::Limits<D> lim(this->thresholds_);
-    weights::computeRows<D>(nl, computeFor, out, [&](std::size_t, Index b, Index e) -> std::uint8_t {
+    weights::computeRows<D>(nl, computeFor, out, [&](std::size_t i, Index b, Index e) -> std::uint8_t {
       weights::kernelRow(kernel, nl, b, e, out);
-      if (weights::firstOrderRow(lim, h, V, nl, b, e, out)) return weights::orderFirst;
+      const bool splashRow = !computeFor.empty() && computeFor[i] == 3;
+      if (!splashRow && weights::firstOrderRow(lim, h, V, nl, b, e, out)) return weights::orderFirst;
       weights::standardRow(h, nl, b, e, out);
       return weights::orderStandard;
     });

@@ -26,9 +26,9 @@ class SPH2Operator final : public DerivativeOperator<D> {
     const weights::Limits<D> lim(this->thresholds_);
     weights::computeRows<D>(nl, computeFor, out, [&](std::size_t i, Index b, Index e) -> std::uint8_t {
       weights::kernelRow(kernel, nl, b, e, out);
-      const bool surfaceRow = !computeFor.empty() && computeFor[i] == 2;
-      if (!surfaceRow && weights::fiRow(lim, h, V, nl, b, e, out)) return weights::orderFI;
-      if (weights::firstOrderRow(lim, h, V, nl, b, e, out)) return weights::orderFirst;
+      const std::uint8_t row = computeFor.empty() ? 1 : computeFor[i];
+      if (row == 1 && weights::fiRow(lim, h, V, nl, b, e, out)) return weights::orderFI;
+      if (row <= 2 && weights::firstOrderRow(lim, h, V, nl, b, e, out)) return weights::orderFirst;
       weights::standardRow(h, nl, b, e, out);
       return weights::orderStandard;
     });

@@ -4,7 +4,8 @@
 // single row to standard SPH (order 0); an isolated particle gets standard
 // (zero) weights. Weights stay finite, the order flag is what the operator
 // used, and each fallback keeps its own exactness (linear fields for order 1).
-// Also: rows marked 2 in computeFor (free-surface rows) start at first order,
+// Also: rows marked 2 in computeFor (free-surface rows) start at first order, rows
+// marked 3 (splash) get standard weights,
 // and FallbackThresholds move the switch points.
 #define BOOST_TEST_MODULE operators_fallback
 #include <boost/test/unit_test.hpp>
@@ -190,4 +191,22 @@ BOOST_AUTO_TEST_CASE(surface_rows_and_thresholds) {
   DerivativeOperator<2>::create(DerivativeScheme::SPH2, n)->computeWeights(s.kernel, s.V, s.nl, mask, s.pw);
   BOOST_TEST(int(s.pw.order[i]) == 1);
   BOOST_TEST(int(s.pw.order[k]) == 2);
+}
+
+BOOST_AUTO_TEST_CASE(splash_rows_use_standard_weights) {
+  // A row marked 3 (a splash particle) gets standard weights with SPH2 and corrected
+  // operators even where its neighbourhood would allow a corrected gradient: built from
+  // the few neighbours of a droplet, a correction matrix amplifies their pressure noise.
+  const double d0 = 0.02;
+  const auto flatSet = select(lattice<2>(50, 1.0, 0.0), flat);
+  const std::size_t k = closest(flatSet, Vec<2>(0.5, 0.3));  // interior: FI otherwise
+  for (auto scheme : {DerivativeScheme::SPH2, DerivativeScheme::corrected}) {
+    std::vector<std::uint8_t> mask(flatSet.size(), 0);
+    mask[k] = 3;
+    Setup<2> s(flatSet, d0, scheme, mask);
+    BOOST_TEST_CONTEXT(toString(scheme)) { BOOST_TEST(int(s.pw.order[k]) == 0); }
+    mask[k] = 1;
+    Setup<2> full(flatSet, d0, scheme, mask);
+    BOOST_TEST_CONTEXT(toString(scheme)) { BOOST_TEST(int(full.pw.order[k]) == (scheme == DerivativeScheme::SPH2 ? 2 : 1)); }
+  }
 }
