@@ -206,6 +206,8 @@ def main():
         if "stability" in entry:
             cmd = [PYTHON, os.path.join(HERE, "..", "stability", "checkStability.py"), case,
                    os.path.join(src, entry["stability"]), "--compare", a.compare]
+            if a.variant:
+                cmd += ["--variant", a.variant]
         else:
             cmd = [PYTHON, a.compare, case]
             if "reference" in entry:

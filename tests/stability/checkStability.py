@@ -13,6 +13,7 @@ log.shizuku); LIMITS a dictionary in the case syntax:
     wallTolerance    0;                // how far (times d0) a fluid particle centre may lie
                                        // beyond a wall surface before it counts as inside
     knownFailures    (densityErrorMode);   // optional: strict expected failures, below
+    variantKnownFailures { long (volume); }  // optional: the list for one size (--variant)
 
 It asserts, each as its own line:
  1. the health guards did not fire: exit status 0, no 'numerical failure' in the log and
@@ -124,10 +125,15 @@ def main():
     ap.add_argument("case")
     ap.add_argument("limits")
     ap.add_argument("--compare", required=True)
+    ap.add_argument("--variant", help="a size of the case (e.g. long): its own knownFailures, if the limits give them")
     a = ap.parse_args()
     cm = load_compare(a.compare)
     lim = cm.read_dictionary(a.limits)
     known = lim.get("knownFailures", [])
+    # variantKnownFailures { long (volume); }: a size whose known failures differ
+    byVariant = lim.get("variantKnownFailures", {})
+    if a.variant and a.variant in byVariant:
+        known = byVariant[a.variant]
     KNOWN.update(known if isinstance(known, list) else [known])
     ids = {"healthGuards", "finite", "finiteSeries", "lost", "walls", "volume", "energy", "kineticEnergy", "densityErrorMode",
            "densityErrorRms"}
