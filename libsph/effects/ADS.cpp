@@ -1,6 +1,5 @@
 // Advective dynamic stabilization (methods.md 9); formula in ADS.hpp.
 #include "effects/ADS.hpp"
-#include <algorithm>
 #include <stdexcept>
 
 namespace shizuku {
@@ -16,7 +15,6 @@ void ADS<D>::correctPositions(FlowState<D>& s) {
   if (delta_.size() != s.size()) throw std::logic_error("ads: allocate() was not called for this particle count");
   const auto& nl = s.neighbours;
   const double dFluid = distance_ * s.d0, dWall = o_.wallDistance * s.d0;
-  const double dMax = std::max(dFluid, dWall);
   const long n = long(s.size());
   const auto& u = s.particles.velocity;
   auto moved = [&](Index j) { return s.isFluid(j) && nearSurface(s.surfaceClass(j)); };
@@ -29,11 +27,9 @@ void ADS<D>::correctPositions(FlowState<D>& s) {
     // interior fluid particle takes its half of a pair it shares with one.
     if (mi || (o_.pairwise && s.isFluid(Index(i)))) {
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
-        const double r = nl.r[k];
-        if (!(r < dMax) || !(r > 0)) continue;
         const Index j = nl.j[k];
-        const double dAds = s.isFluid(j) ? dFluid : dWall;
-        if (!(r < dAds)) continue;
+        const double r = nl.r[k], dAds = s.isFluid(j) ? dFluid : dWall;
+        if (!(r < dAds) || !(r > 0)) continue;
         const bool mj = moved(j);
         if (!mi && !mj) continue;
         if (o_.approachingOnly && (u[i] - u[j]).dot(nl.rij[k]) >= 0) continue;

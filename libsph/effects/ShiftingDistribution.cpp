@@ -45,6 +45,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
   const double coeff = ops ? -par_.C * h * h * V : par_.C * h * V;
   const double rStar = 1.1 * std::sqrt(double(D)) * s.d0;
   const bool haveWeights = !s.weights.gradW.empty() && !s.weights.order.empty();
+  const bool haveGradC = s.gradC.size() == s.size();
   const int wholeNp = (par_.np == std::floor(par_.np) && par_.np >= 0 && par_.np <= 16) ? int(par_.np) : -1;
   const long n = long(s.size());
   long count = 0;
@@ -56,9 +57,9 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     // sum |sum_j V grad W_ij| h (the detector's gradC) reaches projectionThreshold, i.e.
     // whose support reaches past the surface. Deeper vicinity particles have a full
     // neighbourhood and an ill-defined normal: they shift like interior ones.
-    const bool project = cls == SurfaceClass::free || cls == SurfaceClass::splash ||
-                         (cls == SurfaceClass::vicinity &&
-                          !(s.gradC.size() == s.size() && s.gradC[i].norm() * h < par_.projectionThreshold));
+    const bool deepVicinity =
+        cls == SurfaceClass::vicinity && haveGradC && s.gradC[i].norm() * h < par_.projectionThreshold;
+    const bool project = cls != SurfaceClass::interior && !deepVicinity;
     const Vec<D> ni = nrm.size() == s.size() ? nrm[i] : Vec<D>::Zero();
     if (project && ni.squaredNorm() < 0.25) continue;
     // Particles without SPH(2) weights fall back to the kernel gradient.

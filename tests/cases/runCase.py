@@ -44,32 +44,71 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PYTHON = "/usr/bin/python3"
 
 
-def set_key(path, key, value):
-    """Replace the top-level `key ...;` entry of a dictionary file (first one outside braces)."""
-    with open(path) as f:
-        text = f.read()
+def _top_level(text, path, key):
+    """The match of the top-level `key ...;` entry (first one outside braces and comments)."""
     depth = 0
-    for m in re.finditer(r"//[^\n]*|/\*.*?\*/|[{}]|(?m:^[ \t]*" + re.escape(key) + r"[ \t]+[^;]*;)", text, re.S):
+    for m in re.finditer(r"//[^\n]*|/\*.*?\*/|[{}]|(?m:^[ \t]*" + re.escape(key) + r"[ \t]+([^;]*);)", text, re.S):
         tok = m.group(0)
         if tok == "{":
             depth += 1
         elif tok == "}":
             depth -= 1
         elif depth == 0 and not tok.startswith("//") and not tok.startswith("/*"):
-            text = text[:m.start()] + f"{key} {value};" + text[m.end():]
-            with open(path, "w") as f:
-                f.write(text)
-            return
+            return m
     raise SystemExit(f"runCase: no top-level '{key}' in {path}")
+
+
+def get_key(path, key):
+    """The value text of the top-level `key ...;` entry of a dictionary file."""
+    with open(path) as f:
+        return _top_level(f.read(), path, key).group(1).strip()
+
+
+def set_key(path, key, value):
+    """Replace the top-level `key ...;` entry of a dictionary file (first one outside braces)."""
+    with open(path) as f:
+        text = f.read()
+    m = _top_level(text, path, key)
+    with open(path, "w") as f:
+        f.write(text[:m.start()] + f"{key} {value};" + text[m.end():])
+
+
+def _entry_match(text, path, entry, key):
+    """The match of `key VALUE` inside the one-level sub-dictionary `entry { ... }`."""
+    m = re.search(r"(\b" + re.escape(entry) + r"\s*\{[^}]*\b" + re.escape(key) + r"\s+)([^;\s]+)", text)
+    if not m:
+        raise SystemExit(f"runCase: no '{entry} {{ ... {key} ... }}' in {path}")
+    return m
+
+
+def get_entry_key(path, entry, key):
+    """The value text of `key` in the sub-dictionary `entry { ... }` (e.g. a function object's
+    writeInterval) of a dictionary file."""
+    with open(path) as f:
+        return _entry_match(f.read(), path, entry, key).group(2)
+
+
+def set_entry_key(path, entry, key, value):
+    """Replace the value of `key` in the sub-dictionary `entry { ... }` of a dictionary file."""
+    with open(path) as f:
+        text = f.read()
+    m = _entry_match(text, path, entry, key)
+    with open(path, "w") as f:
+        f.write(text[:m.start(2)] + str(value) + text[m.end(2):])
+
+
+def load_module(path, name):
+    """A Python file (with or without .py) imported as a module."""
+    loader = SourceFileLoader(name, path)
+    spec = importlib.util.spec_from_loader(name, loader)
+    mod = importlib.util.module_from_spec(spec)
+    loader.exec_module(mod)
+    return mod
 
 
 def load_compare(path):
     """shizukuCompare (a script without .py) imported as a module, for its dictionary parser."""
-    loader = SourceFileLoader("shizukuCompare", path)
-    spec = importlib.util.spec_from_loader("shizukuCompare", loader)
-    mod = importlib.util.module_from_spec(spec)
-    loader.exec_module(mod)
-    return mod
+    return load_module(path, "shizukuCompare")
 
 
 def copy_case(src, dst):
@@ -90,12 +129,17 @@ def remove_shifting(case):
         f.write(s)
 
 
-def run_or_fail(shizuku, case, threads, what):
-    """Run the solver on a case (log in case/log.shizuku); on a non-zero exit print a FAIL
-    line naming `what` and the summary line, and exit 1."""
+def run_solver(shizuku, case, threads):
+    """Run the solver on a case, its output in case/log.shizuku; returns the exit status."""
     with open(os.path.join(case, "log.shizuku"), "w") as log:
-        rc = subprocess.run([shizuku, "-case", case, "-threads", str(threads)], stdout=log,
-                            stderr=subprocess.STDOUT).returncode
+        return subprocess.run([shizuku, "-case", case, "-threads", str(threads)], stdout=log,
+                              stderr=subprocess.STDOUT).returncode
+
+
+def run_or_fail(shizuku, case, threads, what):
+    """run_solver; on a non-zero exit print a FAIL line naming `what` and the summary line,
+    and exit 1."""
+    rc = run_solver(shizuku, case, threads)
     if rc != 0:
         print(f"FAIL {what}: exit status {rc} (log: {case}/log.shizuku)")
         print("0 passed, 1 failed")
@@ -174,9 +218,7 @@ def main():
         if a.endTime:
             set_key(os.path.join(case, "system/controlDict"), "endTime", a.endTime)
         t0 = time.time()
-        with open(os.path.join(case, "log.shizuku"), "w") as log:
-            rc = subprocess.call([a.shizuku, "-case", case, "-threads", str(a.threads)], stdout=log,
-                                 stderr=subprocess.STDOUT)
+        rc = run_solver(a.shizuku, case, a.threads)
         wall = time.time() - t0
         with open(os.path.join(case, "exitCode"), "w") as f:
             f.write(f"{rc}\n")

@@ -7,8 +7,8 @@ usage: spaceOrder.py CASE WORK --shizuku BIN --compare SHIZUKUCOMPARE
 Runs the Poiseuille start-up case (CASE = tests/cases/poiseuilleStartup, channel height
 H = 0.1 m) at H/d0 = 10, 20, 40 with dt scaled like d0^2 (the viscous limit, so the time
 error shrinks at least as fast as a second-order spatial error), and measures the error of
-the probe velocities at y = H/4, H/2, 3H/4 against the analytic series solution (the same
-series as the case's makeAnalytic.py):
+the probe velocities at y = H/4, H/2, 3H/4 against the analytic series solution (the
+case's makeAnalytic.py, imported):
     e_k = max over probes and over 0.2 <= t <= 2 s of |u_k(y, t) - u(y, t)|.
 The order is the least-squares slope of log e_k against log d0. With --shifting off the
 shift, ADS and XSPH are switched off (the bare projection method); on, the full method.
@@ -29,17 +29,9 @@ import os
 import re
 import shutil
 
-from runCase import copy_case, finish, load_compare, remove_shifting, run_or_fail, set_key
+from runCase import (copy_case, finish, get_key, load_compare, load_module, remove_shifting, run_or_fail,
+                     set_entry_key, set_key)
 
-H, NU, G = 0.1, 1e-3, 8e-3  # the case's channel height, viscosity, body force (README.md)
-
-
-def exact(y, t, terms=400):
-    u = G * y * (H - y) / (2 * NU)
-    for n in range(1, terms, 2):
-        u -= 4 * G * H * H / (NU * math.pi ** 3 * n ** 3) * math.sin(n * math.pi * y / H) * \
-            math.exp(-n * n * math.pi ** 2 * NU * t / (H * H))
-    return u
 
 
 def main():
@@ -56,12 +48,12 @@ def main():
     cm = load_compare(a.compare)
     root = os.path.join(a.work, "spaceOrder")
     shutil.rmtree(root, ignore_errors=True)
-    control = open(os.path.join(a.case, "system", "controlDict")).read()
-    dt0 = float(re.search(r"(?m)^deltaT\s+([^;\s]+)", control).group(1))
-    d00 = float(re.search(r"(?m)^spacing\s+([^;\s]+)", open(os.path.join(a.case, "system", "particlesDict")).read()).group(1))
+    exact = load_module(os.path.join(a.case, "makeAnalytic.py"), "makeAnalytic")  # u(y, t), ys, H
+    dt0 = float(get_key(os.path.join(a.case, "system", "controlDict"), "deltaT"))
+    d00 = float(get_key(os.path.join(a.case, "system", "particlesDict"), "spacing"))
     results = []
     for n in (int(v) for v in a.levels.split(",")):
-        d0 = H / n
+        d0 = exact.H / n
         dt = dt0 * (d0 / d00) ** 2
         steps = int(round(2.0 / dt))
         case = os.path.join(root, f"H{n}")
@@ -70,9 +62,7 @@ def main():
         path = os.path.join(case, "system", "controlDict")
         set_key(path, "deltaT", repr(dt))
         # probes every 0.02 s whatever dt is
-        every = max(1, int(round(0.02 / dt)))
-        text = re.sub(r"(profile\s*\{[^}]*writeInterval\s+)(\d+)", lambda m: m.group(1) + str(every), open(path).read())
-        open(path, "w").write(text)
+        set_entry_key(path, "profile", "writeInterval", max(1, int(round(0.02 / dt))))
         if a.shifting == "off":
             remove_shifting(case)
         run_or_fail(a.shizuku, case, a.threads, f"H/d0 = {n}")
@@ -84,12 +74,12 @@ def main():
             if not m:
                 continue
             t, u = cols[c]
-            y = (0.0125, 0.025, 0.05, 0.075)[int(m.group(1))]  # the case's probe points
-            if y < 0.02:
+            y = exact.ys[int(m.group(1))]
+            if y < 0.2 * exact.H:
                 continue  # y = H/8 is 1.25 d0 from the wall at H/d0 = 10 (README.md)
             for ti, ui in zip(t, u):
                 if 0.2 <= ti <= 2.0 + 1e-9 and ui == ui:
-                    e = max(e, abs(ui - exact(y, ti)))
+                    e = max(e, abs(ui - exact.u(y, ti)))
         results.append((d0, e, dt, steps))
         print(f"     H/d0 = {n}: dt = {dt:.3g} s ({steps} steps), max |u - u_exact| = {e:.3g} m/s")
     for (d, e, _, _), (d2, e2, _, _) in zip(results, results[1:]):

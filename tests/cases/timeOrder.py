@@ -20,11 +20,10 @@ Measured without them: e = 4.43e-6, 2.06e-6, 8.84e-7, 2.95e-7 m/s, ratios 2.15, 
 import argparse
 import math
 import os
-import re
 import shutil
 import sys
 
-from runCase import copy_case, finish, load_compare, remove_shifting, run_or_fail, set_key
+from runCase import copy_case, finish, get_entry_key, get_key, load_compare, remove_shifting, run_or_fail, set_entry_key, set_key
 
 
 def main():
@@ -40,9 +39,9 @@ def main():
     cm = load_compare(a.compare)
     root = os.path.join(a.work, "timeOrder")
     shutil.rmtree(root, ignore_errors=True)
-    control = open(os.path.join(a.case, "system", "controlDict")).read()
-    dt0 = float(re.search(r"(?m)^deltaT\s+([^;\s]+)", control).group(1))
-    interval = int(re.search(r"profile\s*\{[^}]*writeInterval\s+(\d+)", control).group(1))
+    control = os.path.join(a.case, "system", "controlDict")
+    dt0 = float(get_key(control, "deltaT"))
+    interval = int(get_entry_key(control, "profile", "writeInterval"))
     results = []
     for k in range(a.levels):
         case = os.path.join(root, f"dt{k}")
@@ -51,9 +50,7 @@ def main():
         set_key(path, "deltaT", repr(dt0 / 2 ** k))
         set_key(path, "endTime", a.endTime)
         # the profile probes every `interval` steps at dt0: sample at the same times
-        text = re.sub(r"(profile\s*\{[^}]*writeInterval\s+)(\d+)", lambda m: m.group(1) + str(interval * 2 ** k),
-                      open(path).read())
-        open(path, "w").write(text)
+        set_entry_key(path, "profile", "writeInterval", interval * 2 ** k)
         remove_shifting(case)
         run_or_fail(a.shizuku, case, a.threads, f"dt = {dt0 / 2 ** k:g}")
         cols = cm.Series(case).columns

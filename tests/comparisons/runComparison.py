@@ -22,11 +22,10 @@ postProcessing with shizukuCompare's reader, and asserts the paper's ordering:
 Prints the numbers; the last line is `N passed, M failed`."""
 import argparse
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cases"))
-from runCase import copy_case, load_compare, set_key  # noqa: E402
+from runCase import copy_case, load_compare, run_solver, set_key  # noqa: E402
 
 failures = []
 passes = []
@@ -73,9 +72,7 @@ def main():
         set_key(os.path.join(case, "system", "particlesDict"), "spacing", a.spacing)
         for key in ("deltaT", "endTime"):
             set_key(os.path.join(case, "system", "controlDict"), key, getattr(a, key))
-        with open(os.path.join(case, "log.shizuku"), "w") as log:
-            rc[k] = subprocess.run([a.shizuku, "-case", case, "-threads", str(a.threads)], stdout=log,
-                                   stderr=subprocess.STDOUT).returncode
+        rc[k] = run_solver(a.shizuku, case, a.threads)
         cols = cm.Series(case).columns
         if a.measure == "pressureNoise":
             probe[k] = cols["centre/p/point0"]

@@ -217,20 +217,22 @@ def main():
                     if side in opened:
                         overOpen.setdefault(wname, set()).update(int(i) for i in fids[beyond > 0])
                         continue
-                    spilled = np.isin(fids, list(overOpen.get(wname, ())))
-                    if spilled.any():
-                        spill.setdefault(wname, set()).update(int(i) for i in fids[spilled & (beyond > thick)])
-                    beyond = np.where(spilled, -np.inf, beyond)
                     beyond = np.where(along, beyond, -np.inf)
                     # within the wall's layers: inside the wall; past them: out of the container
                     inside = beyond[(beyond <= thick) & np.isfinite(beyond)]
                     depth = float(np.max(inside)) if len(inside) else 0.0
                     if depth > worst_wall[0]:
                         worst_wall = (depth, tname, f"{wname} {side}")
-                    n_out = int(np.sum(beyond > thick))
-                    if n_out and not escaped:
-                        escaped.append(f"{tname}: {n_out} fluid particle(s) past the {wname} {side} wall, "
-                                       f"up to {float(np.max(beyond)) / d0:.3g} d0 beyond its surface")
+                    # past the layers: out of the container, unless seen over an open face of
+                    # this wall region before (spray that left an open container)
+                    past = beyond > thick
+                    spilled = past & np.isin(fids, list(overOpen.get(wname, ())))
+                    if spilled.any():
+                        spill.setdefault(wname, set()).update(int(i) for i in fids[spilled])
+                    out = past & ~spilled
+                    if out.any() and not escaped:
+                        escaped.append(f"{tname}: {int(out.sum())} fluid particle(s) past the {wname} {side} wall, "
+                                       f"up to {float(np.max(beyond[out])) / d0:.3g} d0 beyond its surface")
         ek = 0.5 * m * float(np.sum(u * u))
         ep = -m * float(np.sum(x @ g[:dim])) if g is not None else 0.0
         if energy0 is None:

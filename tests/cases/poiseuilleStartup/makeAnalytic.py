@@ -2,6 +2,7 @@
 """Start-up plane Poiseuille flow: the analytic velocity history (series solution).
 
 usage: makeAnalytic.py WORKCASE   -> WORKCASE/analytic/profile.csv
+(importable: u(y, t), px(t) and the probe heights ys are used by tests/cases/spaceOrder.py)
 
 A channel of height H between no-slip walls at y = 0 and y = H, fluid at rest at t = 0,
 driven by a body force g along x from t = 0 on. The exact solution of
@@ -17,7 +18,6 @@ import math
 import os
 import sys
 
-case = sys.argv[1]
 H, Lx, nu, g, rho = 0.1, 0.05, 1e-3, 8e-3, 1000.0
 ys = [0.0125, 0.025, 0.05, 0.075]  # the probe points of system/controlDict
 
@@ -37,11 +37,16 @@ def px(t):
     return rho * Lx * s
 
 
-os.makedirs(os.path.join(case, "analytic"), exist_ok=True)
-with open(os.path.join(case, "analytic", "profile.csv"), "w") as f:
-    cols = [f"profile/U/point{k}_x" for k in range(len(ys))] + [f"profile/U/point{k}_y" for k in range(len(ys))]
-    f.write("time," + ",".join(cols) + ",conservation/momentum_x\n")
-    for k in range(0, 2001):
-        t = k * 0.002  # 0 .. 4 s
-        f.write(f"{t:g}," + ",".join(f"{u(y, t):.10g}" for y in ys) + "," + ",".join("0" for _ in ys) +
-                f",{px(t):.10g}\n")
+def main(case):
+    os.makedirs(os.path.join(case, "analytic"), exist_ok=True)
+    with open(os.path.join(case, "analytic", "profile.csv"), "w") as f:
+        cols = [f"profile/U/point{k}_x" for k in range(len(ys))] + [f"profile/U/point{k}_y" for k in range(len(ys))]
+        f.write("time," + ",".join(cols) + ",conservation/momentum_x\n")
+        for k in range(0, 2001):
+            t = k * 0.002  # 0 .. 4 s
+            f.write(f"{t:g}," + ",".join(f"{u(y, t):.10g}" for y in ys) + "," + ",".join("0" for _ in ys) +
+                    f",{px(t):.10g}\n")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
