@@ -152,7 +152,24 @@ def main():
     r = run(["-case", CASE, "-field", "densityError", "-time", "0", "-what", "particles", "-range", "-1", "1"])
     ok, what = png_ok(os.path.join(plots, "densityError_0.png"), 20)
     check(r.returncode == 0 and ok, f"-field densityError -range: {what}")
+    # -against: a second case drawn beside at the same time (walls twice: twice the grey pixels)
+    other = os.path.join(WORK, "otherCase")
+    shutil.rmtree(other, ignore_errors=True)
+    write_vtp(os.path.join(other, "0.1", "particles.vtp"), 2.0)
+    r = run(["-case", CASE, "-against", other, "-time", "0.1", "-what", "particles"])
+    pair = os.path.join(plots, "p_0.1_vs_otherCase.png")
+    ok, what = png_ok(pair, 50)
+    check(r.returncode == 0 and ok, f"-against: {what}")
+    if ok:
+        grey = lambda path: int(np.all(np.abs(mpimg.imread(path)[:, :, :3] - 0.6) < 0.01, axis=2).sum())
+        single, double = grey(os.path.join(plots, "p_0.1.png")), grey(pair)
+        check(1.5 < double / max(single, 1) < 2.6, f"-against draws both cases' walls: {double} grey pixels, "
+              f"one case {single}")
+    r = run(["-case", CASE, "-against", other, "-time", "0", "-what", "particles"])
+    check(r.returncode == 0 and "no time 0" in r.stdout, "-against a case without that time: warned, exit 0")
     for bad, why in ((["-case", CASE, "-field", "nothing", "-what", "particles"], "unknown field"),
+                     (["-case", CASE, "-against", os.path.join(WORK, "none"), "-what", "particles"],
+                      "missing -against case"),
                      (["-case", CASE, "-time", "7", "-what", "particles"], "unknown time"),
                      (["-case", os.path.join(WORK, "none")], "missing case"),
                      (["-case", CASE, "-what", "pictures"], "unknown -what")):
