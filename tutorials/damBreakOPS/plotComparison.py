@@ -80,7 +80,7 @@ def main():
         ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(a.out, dpi=130)
-    print(f"  {a.out}")
+    print(f"  {a.out} (histograms at t = {th:g} s)")
 
 
 if __name__ == "__main__":
