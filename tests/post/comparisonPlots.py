@@ -15,20 +15,10 @@ import sys
 import matplotlib.image as mpimg
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scriptChecks import check, finish, write  # noqa: E402
+
 SRC, WORK = sys.argv[1:3]
-FAILURES = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        FAILURES.append(what)
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def make_case(case, drift, hist_times):
@@ -89,8 +79,7 @@ def main():
     r = run("rotatingSquarePatchBaseline/plotComparison.py", a, b, out)
     ok, what = png_ok(out)
     check(r.returncode == 0 and ok, f"rotating-patch comparison figure: {what}")
-    print(f"\n{len(FAILURES)} failure(s)")
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

@@ -20,21 +20,11 @@ from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scriptChecks import check, finish, write  # noqa: E402
+
 PLOT, WORK = sys.argv[1:3]
 CASE = os.path.join(WORK, "plotCase")
-FAILURES = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        FAILURES.append(what)
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def write_vtp(path, t, d0=0.01):
@@ -175,8 +165,7 @@ def main():
                      (["-case", CASE, "-what", "pictures"], "unknown -what")):
         r = run(bad)
         check(r.returncode == 1 and "error" in r.stdout, f"{why}: exit 1 with a message")
-    print(f"\n{len(FAILURES)} failure(s)")
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":

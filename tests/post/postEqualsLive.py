@@ -20,21 +20,11 @@ import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from scriptChecks import check, finish, write  # noqa: E402
+
 SHIZUKU, POST, WORK = sys.argv[1:4]
 CASE = os.path.join(WORK, "damBreakMini")
-FAILURES = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond:
-        FAILURES.append(what)
-
-
-def write(path, text):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(text)
 
 
 def control(end_time):
@@ -176,8 +166,7 @@ def main():
                   f"log.post2.{name}") == 0, f"post-processing the restart, -func {name}")
     compare(live2, pp, "0.03", names, ["0.03", "0.035", "0.04"])
 
-    print(f"\n{len(FAILURES)} failure(s)")
-    return 1 if FAILURES else 0
+    return finish()
 
 
 if __name__ == "__main__":
