@@ -33,12 +33,12 @@ struct RunControl {
   // Time tolerance for "landing exactly" on end and write times.
   double timeTolerance() const { return 1e-9 * (deltaT > 0 ? deltaT : 1.0); }
 
-  // The step to take when a target time (end or write) lies `remaining` ahead and the
-  // step would be dt: the remaining time itself when dt reaches it or falls short of it by
-  // less than 1e-6 dt. Without the second rule a time summed over many fixed steps (60 000
-  // x 1e-4 s ends 4e-11 s short of 6 s) finishes with a sliver step, in which the stabilized
-  // PPE source term (1/dt^2, eq. 9) is 1e13 times too large.
-  static double landOn(double dt, double remaining) { return remaining - dt < 1e-6 * dt ? remaining : dt; }
+  // Whether a step dt towards a target time (end or write) `remaining` ahead should land on
+  // it: when dt reaches it or falls short of it by less than 1e-6 dt. Without the second
+  // rule a time summed over many fixed steps (60 000 x 1e-4 s ends 4e-11 s short of 6 s)
+  // finishes with a sliver step, in which the stabilized PPE source term (1/dt^2, eq. 9)
+  // is 1e13 times too large.
+  static bool landsOn(double dt, double remaining) { return remaining - dt < 1e-6 * dt; }
 
   // Next write time after time t (runTime/adjustableRunTime), from the start time grid.
   double nextWriteTime(double t) const;

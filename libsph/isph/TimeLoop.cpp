@@ -81,12 +81,12 @@ double Simulation<D>::chooseDeltaT(double previous, double nextWrite) {
     // Land exactly on the next write time.
     if (rc_.writeControl == RunControl::WriteControl::adjustableRunTime) {
       const double remaining = nextWrite - s_.time;
-      if (remaining > rc_.timeTolerance() && RunControl::landOn(dt, remaining) == remaining) { dt = remaining; report_.dtLimiter = "write"; }
+      if (remaining > rc_.timeTolerance() && RunControl::landsOn(dt, remaining)) { dt = remaining; report_.dtLimiter = "write"; }
       else if (remaining > dt && remaining < 2 * dt) { dt = 0.5 * remaining; report_.dtLimiter = "write"; }
     }
   }
   const double toEnd = rc_.endTime - s_.time;
-  if (RunControl::landOn(dt, toEnd) == toEnd) { dt = toEnd; report_.dtLimiter = "endTime"; }
+  if (RunControl::landsOn(dt, toEnd)) { dt = toEnd; report_.dtLimiter = "endTime"; }
   return dt;
 }
 

@@ -126,7 +126,7 @@ BOOST_AUTO_TEST_CASE(restart_from_latest_time_is_bit_exact) {
 // 60 000 fixed steps of 1e-4 s summed in floating point end 4e-11 s short of 6 s; the
 // loop used to take that remainder as a 60 001st step of 4e-11 s, in which
 // the stabilized source term (alpha/dt^2, eq. 9) is 1e13 times too large: the baseline
-// rotating patch (L/d0 = 40) reached 1.6e6 m/s in it. RunControl::landOn merges it.
+// rotating patch (L/d0 = 40) reached 1.6e6 m/s in it. RunControl::landsOn merges it into the step.
 BOOST_AUTO_TEST_CASE(fixed_steps_end_on_end_time_without_a_sliver_step) {
   test::TempCase c("sliver");
   c.file("system/controlDict", "endTime 6; deltaT 1e-4; writeControl runTime; writeInterval 6; progressInterval 100000;\n");
@@ -143,6 +143,7 @@ BOOST_AUTO_TEST_CASE(fixed_steps_end_on_end_time_without_a_sliver_step) {
   Log::get().quiet = false;
   BOOST_TEST(sim.state().step == 60000);
   BOOST_TEST(std::abs(sim.state().time - 6.0) < 1e-9);
-  BOOST_TEST(RunControl::landOn(1e-4, 1e-4 + 4e-11) == 1e-4 + 4e-11);  // merged
-  BOOST_TEST(RunControl::landOn(1e-4, 1.5e-4) == 1e-4);                 // a real step remains
+  BOOST_TEST(RunControl::landsOn(1e-4, 1e-4 + 4e-11));   // the remainder is merged
+  BOOST_TEST(RunControl::landsOn(1e-4, 0.5e-4));          // a shorter target is reached
+  BOOST_TEST(!RunControl::landsOn(1e-4, 1.5e-4));         // a real step remains
 }
