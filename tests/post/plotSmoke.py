@@ -84,6 +84,10 @@ def make_case():
           "0 0 0 0 0.25 0 0 0 0.25\n0.1 1 1.2 3 1.25 2 3 9 0.75\n")
     write(f"{CASE}/postProcessing/dErr/0/0.1/histogram.dat",
           "# columns: binCentre countInterior countAll\n# units:   %         -             -\n" + rows)
+    # what a run that broke down leaves next to the tables: a binary particle file
+    os.makedirs(f"{CASE}/postProcessing/healthChecks/0.1", exist_ok=True)
+    with open(f"{CASE}/postProcessing/healthChecks/0.1/offending.vtp", "wb") as f:
+        f.write(b"<VTKFile>\x96\xff\x00 appended binary data")
     write(f"{WORK}/reference.csv", "# reference data\ntime,point0,p/point1\n0,90,45\n0.05,150,40\n0.09,180,41\n")
 
 
@@ -121,7 +125,7 @@ def main():
     make_case()
     r = run(["-case", CASE, "-field", "p", "-reference", os.path.join(WORK, "reference.csv")])
     print(r.stdout)
-    check(r.returncode == 0, "shizukuPlot -field p exits 0")
+    check(r.returncode == 0, "shizukuPlot -field p exits 0 (a health check's binary offending.vtp is skipped)")
     plots = os.path.join(CASE, "plots")
     # particle pictures: a linear pressure through the jet map gives many colours
     for name in ("p_0.png", "p_0.1.png"):
