@@ -3,7 +3,7 @@
 
 usage: runComparison.py NAME WORK --shizuku BIN --compare SHIZUKUCOMPARE --proposed DIR
                         --baseline DIR --spacing D0 --deltaT DT --endTime T --window T0 T1
-                        [--threads N]
+                        [--threads N] [--measure density|pressureNoise] [--baselineBreaksDown]
 
 Copies the two tutorial cases (the proposed method and the variant the paper beats) into
 WORK/NAME/, overrides `spacing` (system/particlesDict) and `deltaT`, `endTime`
@@ -11,7 +11,9 @@ WORK/NAME/, overrides `spacing` (system/particlesDict) and `deltaT`, `endTime`
 postProcessing with shizukuCompare's reader, and asserts the paper's ordering:
   1. the proposed method runs to endTime with exit status 0;
   2. it stays stable at least as long as the baseline (which may stop with exit 2): its
-     last densityError sample is not earlier than the baseline's;
+     last densityError sample is not earlier than the baseline's; with --baselineBreaksDown
+     the baseline must stop with a numerical failure (exit 2) before endTime (the paper's
+     "the conventional method broke down at omega t = 4.3"), its time read from the log;
   3. over the window [T0, T1] (the part of it the baseline reached, at least half of it)
      the time average of the interior density-error mode (eq. 22, densityError.dat) and
      of the interior mean are smaller in magnitude for the proposed method (--measure
@@ -22,6 +24,7 @@ postProcessing with shizukuCompare's reader, and asserts the paper's ordering:
 Prints the numbers; the last line is `N passed, M failed`."""
 import argparse
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cases"))
@@ -49,6 +52,14 @@ def pressure_noise(t, p, t0, t1):
     return float(np.sqrt(np.mean((p[m] - smooth[m]) ** 2)))
 
 
+def breakdown_time(log):
+    """The time of the step a numerical failure was found at, from the solver's log (None
+    when the log reports none)."""
+    with open(log) as f:
+        m = re.search(r"numerical failure: .* at step \d+, time ([0-9.eE+-]+)", f.read())
+    return float(m.group(1)) if m else None
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("name")
@@ -63,6 +74,7 @@ def main():
     p.add_argument("--window", nargs=2, type=float, required=True)
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--measure", choices=("density", "pressureNoise"), default="density")
+    p.add_argument("--baselineBreaksDown", action="store_true")
     a = p.parse_args()
     cm = load_compare(a.compare)
     rc, series, end, probe = {}, {}, {}, {}
@@ -85,6 +97,11 @@ def main():
     check(end["proposed"] >= end["baseline"],
           f"{a.name}: the proposed method stays stable at least as long as the baseline "
           f"(to t = {end['proposed']:.4g} s against {end['baseline']:.4g} s)")
+    if a.baselineBreaksDown:
+        when = breakdown_time(os.path.join(a.work, a.name, "baseline", "log.shizuku"))
+        check(rc["baseline"] == 2 and when is not None and when < float(a.endTime),
+              f"{a.name}: the baseline breaks down before endTime {a.endTime} (exit status "
+              f"{rc['baseline']}, numerical failure at t = {when})")
     t0, t1 = a.window[0], min(a.window[1], end["baseline"])
     if check(t1 - t0 >= 0.5 * (a.window[1] - a.window[0]),
              f"{a.name}: the baseline reached at least half the window ({t0}, {a.window[1]}) s (t = {end['baseline']:.4g})"):

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The tutorials' comparison plots (issue 5) on hand-made postProcessing files:
 tutorials/damBreakOPS/plotComparison.py (mode and mean, volume sum, histograms) and
-tutorials/rotatingSquarePatchBaseline/plotComparison.py (centre pressure, density).
+tutorials/rotatingSquarePatchBaseline/plotComparison.py (centre pressure, density; a run that
+stopped early is marked and its time printed).
 Each must write a real PNG; the dam-break one must pick the latest histogram time the two
 runs share, take --time, and fail with a message when they share none.
 
@@ -21,12 +22,12 @@ from scriptChecks import check, finish, write  # noqa: E402
 SRC, WORK = sys.argv[1:3]
 
 
-def make_case(case, drift, hist_times):
+def make_case(case, drift, hist_times, end=2):
     """densityError.dat (mean drifting by `drift` % per s), conservation.dat with a
     vector column, histograms at hist_times, a centre-pressure probe."""
     shutil.rmtree(case, ignore_errors=True)
     pp = os.path.join(case, "postProcessing")
-    t = np.linspace(0, 2, 21)
+    t = np.linspace(0, end, int(round(10 * end)) + 1)
     write(f"{pp}/densityError/0/densityError.dat",
           "# columns: time mean rms max mode meanAll rmsAll maxAll modeAll\n# units: s % % % % % % % %\n" +
           "".join(f"{x:g} {drift * x:g} 1 2 {round(drift * x * 4) / 4:g} 3 4 9 0.25\n" for x in t))
@@ -78,7 +79,15 @@ def main():
     out = os.path.join(WORK, "rotating.png")
     r = run("rotatingSquarePatchBaseline/plotComparison.py", a, b, out)
     ok, what = png_ok(out)
-    check(r.returncode == 0 and ok, f"rotating-patch comparison figure: {what}")
+    check(r.returncode == 0 and ok and "stopped" not in r.stdout,
+          f"rotating-patch comparison figure: {what}, no run marked as stopped")
+    d = os.path.join(WORK, "brokeDown")
+    make_case(d, 1.5, (), end=1.3)
+    out = os.path.join(WORK, "rotating_breakdown.png")
+    r = run("rotatingSquarePatchBaseline/plotComparison.py", a, d, out, "--baselineLabel", "conventional")
+    ok, what = png_ok(out)
+    check(r.returncode == 0 and ok and "conventional stopped at omega t = 1.3" in r.stdout,
+          f"a baseline that stopped at omega t = 1.3 is marked and reported: {what}")
     return finish()
 
 

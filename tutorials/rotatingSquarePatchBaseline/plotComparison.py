@@ -3,7 +3,11 @@
 stabilized ISPH): centre pressure p/(rho omega^2 L^2) and interior mean density error
 (eq. 22) against omega t (the paper's Fig. 5, plus the density it discusses with Fig. 4).
 
-usage: plotComparison.py PROPOSED_CASE BASELINE_CASE OUT.png [--rho 1000 --omega 1 --L 1 --d0 0.01]"""
+A run that stopped before the other (a numerical breakdown: shizuku writes the last good
+state and exits 2) is marked with a cross at its last sample, and the time is printed.
+
+usage: plotComparison.py PROPOSED_CASE BASELINE_CASE OUT.png [--rho 1000 --omega 1 --L 1 --d0 0.01]
+                         [--baselineLabel TEXT]"""
 import argparse
 
 import matplotlib
@@ -21,12 +25,22 @@ def main():
     p.add_argument("--omega", type=float, default=1.0)
     p.add_argument("--L", type=float, default=1.0)
     p.add_argument("--d0", type=float, default=0.01)
+    p.add_argument("--baselineLabel", default="OPS + stabilized ISPH")
     a = p.parse_args()
     scale = a.rho * a.omega ** 2 * a.L ** 2
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 3.4))
-    for case, label, colour in ((a.proposed, "proposed", "C0"), (a.baseline, "OPS + stabilized ISPH", "C3")):
-        t, pc = np.loadtxt(f"{case}/postProcessing/centre/0/p", comments="#", unpack=True)
+    runs = ((a.proposed, "proposed", "C0"), (a.baseline, a.baselineLabel, "C3"))
+    probes = {case: np.loadtxt(f"{case}/postProcessing/centre/0/p", comments="#", unpack=True)
+              for case, _, _ in runs}
+    last = max(float(t[-1]) for t, _ in probes.values())
+    for case, label, colour in runs:
+        t, pc = probes[case]
         ax1.plot(a.omega * t, pc / scale, color=colour, lw=1, label=label)
+        if t[-1] < last * (1 - 1e-6):
+            good = np.isfinite(pc)
+            ax1.plot(a.omega * t[good][-1], pc[good][-1] / scale, "x", color=colour, ms=9, mew=2,
+                     label=f"{label}: stopped at omega t = {a.omega * t[-1]:.2f}")
+            print(f"  {label} stopped at omega t = {a.omega * t[-1]:.3g}")
         d = np.loadtxt(f"{case}/postProcessing/densityError/0/densityError.dat", comments="#")
         ax2.plot(a.omega * d[:, 0], d[:, 1], color=colour, lw=1, label=f"{label}: time average {np.nanmean(d[:, 1]):.2f} %")
     ax1.axhline(-0.147343 * (1 - a.d0 / a.L) ** 2, color="k", lw=0.6, ls=":", label="analytic at t = 0 (side L - d0)")
