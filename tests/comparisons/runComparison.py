@@ -54,11 +54,17 @@ def pressure_noise(t, p, t0, t1):
 
 
 def breakdown_time(log):
-    """The time of the step a numerical failure was found at, from the solver's log (None
-    when the log reports none)."""
+    """The time of the step a numerical failure was found at, from the solver's log: the
+    health checks name it; other failures (non-finite position in the neighbour search, the
+    pressure solver) are dated by the last good state written. None when neither is there."""
     with open(log) as f:
-        m = re.search(r"numerical failure: .* at step \d+, time ([0-9.eE+-]+)", f.read())
-    return float(m.group(1)) if m else None
+        text = f.read()
+    for pattern in (r"numerical failure: .* at step \d+, time ([0-9.eE+-]+)",
+                    r"Writing the last good state \(time ([0-9.eE+-]+)"):
+        m = re.search(pattern, text)
+        if m:
+            return float(m.group(1))
+    return None
 
 
 def main():

@@ -30,16 +30,19 @@ def main():
     scale = a.rho * a.omega ** 2 * a.L ** 2
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 3.4))
     runs = ((a.proposed, "proposed", "C0"), (a.baseline, a.baselineLabel, "C3"))
-    probes = {case: np.loadtxt(f"{case}/postProcessing/centre/0/p", comments="#", unpack=True)
+    probes = {case: np.loadtxt(f"{case}/postProcessing/centre/0/p", comments="#", ndmin=2).T
               for case, _, _ in runs}
     last = max(float(t[-1]) for t, _ in probes.values())
     for case, label, colour in runs:
         t, pc = probes[case]
         ax1.plot(a.omega * t, pc / scale, color=colour, lw=1, label=label)
         if t[-1] < last * (1 - 1e-6):
+            stop = f"{label}: stopped at omega t = {a.omega * t[-1]:.2f}"
             good = np.isfinite(pc)
-            ax1.plot(a.omega * t[good][-1], pc[good][-1] / scale, "x", color=colour, ms=9, mew=2,
-                     label=f"{label}: stopped at omega t = {a.omega * t[-1]:.2f}")
+            if good.any():  # the cross at the last value the probe had
+                ax1.plot(a.omega * t[good][-1], pc[good][-1] / scale, "x", color=colour, ms=9, mew=2, label=stop)
+            else:
+                ax1.axvline(a.omega * t[-1], color=colour, ls="--", lw=1, label=stop)
             print(f"  {label} stopped at omega t = {a.omega * t[-1]:.3g}")
         d = np.loadtxt(f"{case}/postProcessing/densityError/0/densityError.dat", comments="#")
         ax2.plot(a.omega * d[:, 0], d[:, 1], color=colour, lw=1, label=f"{label}: time average {np.nanmean(d[:, 1]):.2f} %")
