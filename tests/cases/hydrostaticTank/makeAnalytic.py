@@ -5,7 +5,7 @@ usage: makeAnalytic.py WORKCASE   -> WORKCASE/analytic/pressure.csv
 
 The free-surface condition p = 0 is imposed on the top particle row, which lies d0/2
 below the nominal water depth H = 0.4 m (the same convention as the rotating patch's
-L - d0 side, /work/shared/refdata/README.md; copied numbers in tests/cases/README.md).
+L - d0 side, tests/cases/README.md).
 rho = 1000 kg/m^3, g = 9.81 m/s^2 from constant/; the probe heights and d0 are read
 from the work case, so the file matches the run's own resolution.
 """

@@ -3,8 +3,7 @@
 
 usage: makeAnalytic.py WORKCASE   -> WORKCASE/analytic/invariants.csv
 
-Exact answers (/work/shared/refdata/README.md and square_patch_invariants.csv, copied in
-tests/cases/README.md): initial centre pressure p_c = -0.147342707 rho omega^2 L^2;
+Exact answers (tests/cases/README.md): initial centre pressure p_c = -0.147342707 rho omega^2 L^2;
 kinetic energy rho omega^2 L^4/12 and angular momentum -rho omega L^4/6 (clockwise),
 conserved for all time. Conventions used here:
 - p = 0 is imposed on the outermost particle row, d0/2 inside the true edge, so the
