@@ -13,7 +13,8 @@ Reported, as file:line: message, with exit status 1:
       `design.md N[.M]` / `design.md part N` whose section has no heading in that document
       (headings `## 4. Title`, `### 4.2 Title`, `## Part 2. Title`); a list such as
       `method.md 8.3, 14.5` or `method.md 5.1-5.3` is checked number by number;
-      and any mention of `methods.md`, which is not in the repository (cite docs/method.md);
+      and any mention of the old notes outside the repository, `methods`+`.md` or
+      `methods` followed by a section number (cite docs/method.md N instead);
   (c) a relative link `[text](target)` in a Markdown file whose target is not a tracked file
       or folder, or whose `#anchor` names no heading of the target Markdown file.
 Exit status 0 when every reference resolves. Python 3 standard library only.
@@ -35,6 +36,7 @@ CITE = re.compile(r"(?<![\w/.-])(?:docs/)?(method|design)\.md\s*(?:sections?\s+|
                   re.IGNORECASE)
 OLD_NAME = "methods" + ".md"
 OLD_CITE = re.compile(r"(?<![\w-])" + re.escape(OLD_NAME) + r"\b")
+OLD_SHORT = re.compile(r"(?<![\w./-])methods (" + NUM_LIST + r")")
 HEADING = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")
 SECTION = re.compile(r"^(part\s+)?(\d+(?:\.\d+)*)\.?(?:\s|$)", re.IGNORECASE)
 LINK = re.compile(r"!?\[(?:[^\]\[]|\[[^\]]*\])*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
@@ -148,6 +150,10 @@ def check(root):
                 for m in OLD_CITE.finditer(line):
                     checked += 1
                     report(f, n, "cites %s, which is not in the repository; cite docs/method.md" % OLD_NAME)
+                for m in OLD_SHORT.finditer(line):
+                    checked += 1
+                    report(f, n, "cites 'methods %s' (%s, not in the repository); cite docs/method.md %s"
+                           % (m.group(1), OLD_NAME, m.group(1)))
             # (c) relative Markdown links
             if not is_md:
                 continue
@@ -197,6 +203,7 @@ def self_test():
         "src/b.cpp": ("// docs/%s 4.7\n" % M, "has no such section"),
         "src/c.cpp": ("// %s part 3\n" % G, "has no such section"),
         "src/d.cpp": ("// see %s 4.2\n" % OLD_NAME, "cite docs/method.md"),
+        "docs/i.md": ("| detection (%s 5) |\n" % OLD_NAME[:-3], "cite docs/method.md 5"),
         "src/e.hpp": ("// see %s 4.2, 14.9\n" % M, "14.9"),
         "README2.md": ("Notes in [here](%s/docs/notes.md).\n" % SHARED, "outside the repository"),
         "src/f.py": ("DATA = '%sshared/refdata/x.csv'\n" % WORK_AREA, "outside the repository"),
