@@ -8,7 +8,8 @@ Usage: checkReferences.py REPO_ROOT      scan the repository (tracked files: `gi
 
 Reported, as file:line: message, with exit status 1:
   (a) a reference to the project's shared notes outside the repository (the parent folder's
-      `shared` directory) or to an absolute path of the machine's work area;
+      `shared` directory), to an absolute path of the machine's work area, or to the notes'
+      check scripts (a `verify` folder the repository does not have);
   (b) a citation `docs/method.md N[.M]` / `method.md N[.M]` or `docs/design.md N[.M]` /
       `design.md N[.M]` / `design.md part N` whose section has no heading in that document
       (headings `## 4. Title`, `### 4.2 Title`, `## Part 2. Title`); a list such as
@@ -29,6 +30,8 @@ import tempfile
 SHARED = ".." + "/shared"
 WORK_AREA = "/" + "work" + "/"
 OUTSIDE = re.compile(re.escape(SHARED) + r"\b|(?<![\w.~-])" + re.escape(WORK_AREA) + r"\S*")
+# The shared notes' check scripts and outputs (not in the repository; cite the repository's tests).
+NOTES_SCRIPTS = re.compile(r"(?<![\w./-])" + "veri" + r"fy/[\w.-]+")
 
 NUM = r"\d+(?:\.\d+)?"
 NUM_LIST = NUM + r"(?:\s*(?:,|-|–|and|&)\s*" + NUM + r")*"
@@ -113,6 +116,7 @@ def check(root):
         for k in range(1, len(parts)):
             dirset.add("/".join(parts[:k]))
     has_old = any(f.split("/")[-1] == OLD_NAME for f in files)
+    has_notes_scripts = any(f.startswith("veri" + "fy/") for f in files)
     docs = {}
     for name in ("method", "design"):
         text = read_text(os.path.join(root, "docs", name + ".md"))
@@ -135,6 +139,11 @@ def check(root):
             for m in OUTSIDE.finditer(line):
                 checked += 1
                 report(f, n, "refers to '%s', outside the repository" % m.group(0).rstrip(").,;:'\"`"))
+            if not has_notes_scripts:
+                for m in NOTES_SCRIPTS.finditer(line):
+                    checked += 1
+                    report(f, n, "refers to '%s', a check of the notes outside the repository; state the "
+                           "result or cite the repository's test" % m.group(0).rstrip(".,;:)"))
             # (b) section citations
             for m in CITE.finditer(line):
                 doc = m.group(1).lower()
@@ -206,6 +215,7 @@ def self_test():
         "docs/i.md": ("| detection (%s 5) |\n" % OLD_NAME[:-3], "cite docs/method.md 5"),
         "src/e.hpp": ("// see %s 4.2, 14.9\n" % M, "14.9"),
         "README2.md": ("Notes in [here](%s/docs/notes.md).\n" % SHARED, "outside the repository"),
+        "src/j.cpp": ("// numbers of %s/sph2_check.out\n" % ("veri" + "fy"), "check of the notes"),
         "src/f.py": ("DATA = '%sshared/refdata/x.csv'\n" % WORK_AREA, "outside the repository"),
         "docs/g.md": ("See [missing](missing.md).\n", "no such file"),
         "docs/h.md": ("See [anchor](%s#99-nothing).\n" % M, "no heading with anchor"),
