@@ -21,6 +21,7 @@
 #include "core/Log.hpp"
 #include "functionObjects/FunctionObjectFactory.hpp"
 #include "functionObjects/TimeSelection.hpp"
+#include "io/TimeDirectory.hpp"
 #include "isph/Simulation.hpp"
 #include <boost/program_options.hpp>
 #include <filesystem>

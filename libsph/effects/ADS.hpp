@@ -24,7 +24,7 @@
 namespace shizuku {
 
 template <int D>
-class ADS final : public Effect<D> {
+class ADS final : public PositionCorrectionEffect<D> {
  public:
   struct Options {
     bool pairwise = false;         // partners pair
@@ -35,7 +35,6 @@ class ADS final : public Effect<D> {
     if (o_.wallDistance < 0) o_.wallDistance = distance;
   }
   std::string name() const override { return "ads"; }
-  EffectStage stage() const override { return EffectStage::postAdvection; }
   std::string describe() const override;
   void allocate(const FlowState<D>& s) override { delta_.assign(s.size(), Vec<D>::Zero()); }
   void correctPositions(FlowState<D>& s) override;
@@ -48,5 +47,9 @@ class ADS final : public Effect<D> {
   std::vector<Vec<D>> delta_;  // scratch, sized in allocate()
   long count_ = 0;
 };
+
+// Builds the effect from its dictionary (keys in the header comment above).
+template <int D>
+std::unique_ptr<Effect<D>> makeADS(const Dictionary& dict, const FlowState<D>& s);
 
 }  // namespace shizuku

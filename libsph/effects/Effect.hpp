@@ -1,13 +1,18 @@
-// An optional physical or numerical effect of the step (gravity, viscosity,
-// PPE stabilization, shifting terms, ADS, XSPH). Effects are built by name from
-// their dictionary entry through EffectRegistry; an absent entry builds
-// nothing, so it allocates no array and adds no loop (the user's demand 3).
-// Each effect acts at one stage of the step (methods.md 13) by overriding the
-// matching hook; the solver calls only the effects of each stage.
+// An optional physical or numerical effect of the step, typed by what it does:
+//   ForceEffect              adds an acceleration to the predictor (gravity, viscosity; eq. 4)
+//   PressureSourceEffect     adds a term to the PPE source (stabilized ISPH; eq. 9)
+//   AdvectionVelocityEffect  adds a velocity to the advection of eq. 7 (XSPH)
+//   PositionCorrectionEffect moves particles after advection (ADS)
+//   ShiftTerm                contributes to the particle shift (OPS/DPS, volume, surface fit),
+//                            owned by ParticleShifting, which caps and applies the sum.
+// Effects are built by name from their dictionary entry through EffectRegistry; an absent
+// entry builds nothing, so it allocates no array and adds no loop. Each effect states the
+// time-step limit it imposes (docs/method.md 4.3), so the time loop needs no physics of its own.
 #pragma once
 #include "core/Dictionary.hpp"
 #include "core/Log.hpp"
 #include "operators/FlowState.hpp"
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
@@ -15,21 +20,34 @@
 
 namespace shizuku {
 
+// The step stage an effect acts in (docs/method.md 13), in execution order.
 enum class EffectStage {
-  force,          // step 5: predictor accelerations (gravity, viscosity)
-  pressureSource, // step 6: extra PPE source terms (stabilized ISPH, eq. 9)
-  advection,      // step 8: extra advection velocity (XSPH)
-  postAdvection,  // step 9: position corrections after advection (ADS)
-  shift           // step 10: particle-shift contributions (OPS/DPS, volume, surface fit)
+  force,          // step 5: predictor accelerations
+  pressureSource, // step 6: extra PPE source terms
+  advection,      // step 8: extra advection velocity
+  postAdvection,  // step 9: position corrections after advection
+  shift           // step 10: particle-shift contributions
 };
 const char* toString(EffectStage s);
 
-// Per-step quantities an effect needs; the solver computes each once per step
+// Per-step quantities an effect needs; the step computes each once per step
 // only if some active effect asks for it.
 struct EffectNeeds {
   bool normals = false;          // outward unit normals on free-surface and vicinity particles
   bool surfaceFit = false;       // leave-one-out line fit (signed distance, fitted normal, curvature)
   bool velocityGradient = false; // <grad u> of the corrected velocity
+  EffectNeeds& operator|=(const EffectNeeds& o) {
+    normals |= o.normals;
+    surfaceFit |= o.surfaceFit;
+    velocityGradient |= o.velocityGradient;
+    return *this;
+  }
+};
+
+// The largest time step an effect allows, and the name the progress line shows for it.
+struct TimeStepLimit {
+  double dt = INFINITY;
+  const char* name = "";
 };
 
 template <int D>
@@ -37,20 +55,50 @@ class Effect {
  public:
   virtual ~Effect() = default;
   virtual std::string name() const = 0;       // e.g. "gravity", "shifting/distribution"
-  virtual EffectStage stage() const = 0;
+  virtual EffectStage stage() const = 0;      // fixed by the typed base below
   virtual std::string describe() const = 0;   // parameters with units, for -dryRun and the log
   virtual EffectNeeds needs() const { return {}; }
   // Size the effect's own arrays (called before the time loop and after a particle-count change).
   virtual void allocate(const FlowState<D>&) {}
-  // Stage hooks (only the one of stage() is called).
-  virtual void addAcceleration(const FlowState<D>&, std::vector<Vec<D>>& /*acc*/) {}
-  virtual void addPressureSource(const FlowState<D>&, std::vector<double>& /*rhs, per particle*/) {}
-  virtual void addAdvectionVelocity(const FlowState<D>&, const std::vector<Vec<D>>& /*uNew*/,
-                                    std::vector<Vec<D>>& /*du*/) {}
-  virtual void correctPositions(FlowState<D>&) {}
-  virtual void addShift(const FlowState<D>&, std::vector<Vec<D>>& /*dr*/) {}
+  virtual TimeStepLimit timeStepLimit(const FlowState<D>&) const { return {}; }
   // Number of particles the effect acted on in its last call (for the log; -1 = not counted).
   virtual long lastActionCount() const { return -1; }
+};
+
+template <int D>
+class ForceEffect : public Effect<D> {
+ public:
+  EffectStage stage() const final { return EffectStage::force; }
+  virtual void addAcceleration(const FlowState<D>&, std::vector<Vec<D>>& acc) = 0;
+};
+
+template <int D>
+class PressureSourceEffect : public Effect<D> {
+ public:
+  EffectStage stage() const final { return EffectStage::pressureSource; }
+  virtual void addPressureSource(const FlowState<D>&, std::vector<double>& rhsPerParticle) = 0;
+};
+
+template <int D>
+class AdvectionVelocityEffect : public Effect<D> {
+ public:
+  EffectStage stage() const final { return EffectStage::advection; }
+  virtual void addAdvectionVelocity(const FlowState<D>&, const std::vector<Vec<D>>& uNew,
+                                    std::vector<Vec<D>>& du) = 0;
+};
+
+template <int D>
+class PositionCorrectionEffect : public Effect<D> {
+ public:
+  EffectStage stage() const final { return EffectStage::postAdvection; }
+  virtual void correctPositions(FlowState<D>&) = 0;
+};
+
+template <int D>
+class ShiftTerm : public Effect<D> {
+ public:
+  EffectStage stage() const final { return EffectStage::shift; }
+  virtual void addShift(const FlowState<D>&, std::vector<Vec<D>>& dr) = 0;
 };
 
 // Named creators. Built-in effects are added by registerBuiltinEffects() (one
@@ -70,6 +118,7 @@ class EffectRegistry {
   std::map<std::string, Factory> table_;
 };
 
-template <int D> void registerBuiltinEffects();
+template <int D> void registerBuiltinEffects();                      // into instance(), once
+template <int D> void registerBuiltinEffects(EffectRegistry<D>& r);  // into r
 
 }  // namespace shizuku

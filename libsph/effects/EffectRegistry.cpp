@@ -1,8 +1,14 @@
-// The effect registry: named creators for every optional effect.
+// The effect registry: named creators for every optional effect, and the one list of
+// the built-in effects with the names system/sphSchemes and the constant/ files use.
 #include "effects/Effect.hpp"
-#include "effects/BodyForces.hpp"
+#include "effects/Gravity.hpp"
+#include "effects/Viscosity.hpp"
 #include "effects/PressureStabilization.hpp"
-#include "effects/registerShiftingEffects.hpp"
+#include "effects/ADS.hpp"
+#include "effects/ShiftingDistribution.hpp"
+#include "effects/SurfaceFitting.hpp"
+#include "effects/VolumeCorrection.hpp"
+#include "effects/XSPH.hpp"
 
 namespace shizuku {
 
@@ -44,19 +50,28 @@ std::vector<std::string> EffectRegistry<D>::names() const {
 }
 
 template <int D>
+void registerBuiltinEffects(EffectRegistry<D>& r) {
+  r.add("gravity", makeGravity<D>);
+  r.add("viscosity", makeViscosity<D>);
+  r.add("pressureStabilization", makePressureStabilization<D>);
+  r.add("xsph", makeXSPH<D>);
+  r.add("ads", makeADS<D>);
+  r.add("shifting/distribution", makeShiftingDistribution<D>);
+  r.add("shifting/volumeCorrection", makeVolumeCorrection<D>);
+  r.add("shifting/surfaceFitting", makeSurfaceFitting<D>);
+}
+
+template <int D>
 void registerBuiltinEffects() {
   auto& r = EffectRegistry<D>::instance();
-  if (r.has("gravity")) return;
-  r.add("gravity", [](const Dictionary& d, const FlowState<D>& s) { return makeGravity<D>(d, s); });
-  r.add("viscosity", [](const Dictionary& d, const FlowState<D>& s) { return makeViscosity<D>(d, s); });
-  r.add("pressureStabilization",
-        [](const Dictionary& d, const FlowState<D>& s) { return makePressureStabilization<D>(d, s); });
-  registerShiftingEffects<D>(r);
+  if (!r.has("gravity")) registerBuiltinEffects<D>(r);
 }
 
 template class EffectRegistry<2>;
 template class EffectRegistry<3>;
 template void registerBuiltinEffects<2>();
 template void registerBuiltinEffects<3>();
+template void registerBuiltinEffects<2>(EffectRegistry<2>&);
+template void registerBuiltinEffects<3>(EffectRegistry<3>&);
 
 }  // namespace shizuku

@@ -5,11 +5,10 @@ namespace shizuku {
 namespace {
 
 template <int D>
-class DensityInvariantSource final : public Effect<D> {
+class DensityInvariantSource final : public PressureSourceEffect<D> {
  public:
   explicit DensityInvariantSource(double alpha) : alpha_(alpha) {}
   std::string name() const override { return "pressureStabilization"; }
-  EffectStage stage() const override { return EffectStage::pressureSource; }
   std::string describe() const override { return cat("type densityInvariant, alpha = ", alpha_); }
   void addPressureSource(const FlowState<D>& s, std::vector<double>& rhs) override {
     const auto& rho = s.particles.density;

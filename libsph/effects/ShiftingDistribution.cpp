@@ -1,6 +1,7 @@
 // OPS (eqs. 11-13) and DPS (eq. 14) distribution shifts; formulas, signs and
 // keys in ShiftingDistribution.hpp (methods.md 6, 7).
 #include "effects/ShiftingDistribution.hpp"
+#include "effects/EffectParameters.hpp"
 #include <cmath>
 
 namespace shizuku {
@@ -93,7 +94,28 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
   count_ = count;
 }
 
+template <int D>
+std::unique_ptr<Effect<D>> makeShiftingDistribution(const Dictionary& d, const FlowState<D>&) {
+  DistributionParameters p;
+  const std::string type = d.getOptionOr("type", {"OPS", "DPS"}, "OPS");
+  p.type = type == "OPS" ? DistributionParameters::Type::OPS : DistributionParameters::Type::DPS;
+  p.C = nonNegative(d, "C", 0.2);
+  if (p.type == DistributionParameters::Type::OPS) {
+    if (p.C > 0.5) d.error("C", "must be <= 0.5 (stability of the shifting diffusion, methods.md 6)");
+    p.Rp = nonNegative(d, "Rp", 0.2);
+    p.np = nonNegative(d, "np", 4);
+    const std::string g = d.getOptionOr("gradient", {"kernel", "corrected", "concentration"}, "kernel");
+    using G = DistributionParameters::Gradient;
+    p.gradient = g == "kernel" ? G::kernel : g == "corrected" ? G::corrected : G::concentration;
+  }
+  p.projectionThreshold = nonNegative(d, "projectionThreshold", 0.01);
+  return std::make_unique<ShiftingDistribution<D>>(p);
+}
+
 template class ShiftingDistribution<2>;
 template class ShiftingDistribution<3>;
+
+template std::unique_ptr<Effect<2>> makeShiftingDistribution<2>(const Dictionary&, const FlowState<2>&);
+template std::unique_ptr<Effect<3>> makeShiftingDistribution<3>(const Dictionary&, const FlowState<3>&);
 
 }  // namespace shizuku

@@ -51,11 +51,10 @@ struct DistributionParameters {
 };
 
 template <int D>
-class ShiftingDistribution final : public Effect<D> {
+class ShiftingDistribution final : public ShiftTerm<D> {
  public:
   explicit ShiftingDistribution(const DistributionParameters& p) : par_(p) {}
   std::string name() const override { return "shifting/distribution"; }
-  EffectStage stage() const override { return EffectStage::shift; }
   std::string describe() const override;
   EffectNeeds needs() const override {
     EffectNeeds n;
@@ -70,5 +69,9 @@ class ShiftingDistribution final : public Effect<D> {
   DistributionParameters par_;
   long count_ = 0;
 };
+
+// Builds the effect from its dictionary (keys in the header comment above).
+template <int D>
+std::unique_ptr<Effect<D>> makeShiftingDistribution(const Dictionary& dict, const FlowState<D>& s);
 
 }  // namespace shizuku

@@ -1,5 +1,6 @@
 // Surface-fitting shift, eq. (19); formula, gates and sign in SurfaceFitting.hpp.
 #include "effects/SurfaceFitting.hpp"
+#include "effects/EffectParameters.hpp"
 #include "surface/SurfaceFit.hpp"
 #include <cmath>
 
@@ -33,7 +34,23 @@ void SurfaceFitting<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr)
   count_ = count;
 }
 
+template <int D>
+std::unique_ptr<Effect<D>> makeSurfaceFitting(const Dictionary& d, const FlowState<D>&) {
+  SurfaceFittingParameters p;
+  p.C = nonNegative(d, "C", 1e-4);
+  p.maxCurvature = positive(d, "maxCurvature", 0.2);
+  p.minDistance = nonNegative(d, "minDistance", 0.15);
+  p.maxDistance = positive(d, "maxDistance", 0.6);
+  if (!(p.maxDistance > p.minDistance)) d.error("maxDistance", "must be greater than minDistance");
+  p.curvatureFactor = positive(d, "curvatureFactor", 0.34);
+  p.smoothingSign = d.getOptionOr("sign", {"smoothing", "asPrinted"}, "smoothing") == "smoothing";
+  return std::make_unique<SurfaceFitting<D>>(p);
+}
+
 template class SurfaceFitting<2>;
 template class SurfaceFitting<3>;
+
+template std::unique_ptr<Effect<2>> makeSurfaceFitting<2>(const Dictionary&, const FlowState<2>&);
+template std::unique_ptr<Effect<3>> makeSurfaceFitting<3>(const Dictionary&, const FlowState<3>&);
 
 }  // namespace shizuku

@@ -26,11 +26,10 @@ struct SurfaceFittingParameters {
 };
 
 template <int D>
-class SurfaceFitting final : public Effect<D> {
+class SurfaceFitting final : public ShiftTerm<D> {
  public:
   explicit SurfaceFitting(const SurfaceFittingParameters& p) : par_(p) {}
   std::string name() const override { return "shifting/surfaceFitting"; }
-  EffectStage stage() const override { return EffectStage::shift; }
   std::string describe() const override;
   EffectNeeds needs() const override {
     EffectNeeds n;
@@ -46,5 +45,9 @@ class SurfaceFitting final : public Effect<D> {
   SurfaceFittingParameters par_;
   long count_ = 0;
 };
+
+// Builds the effect from its dictionary (keys in the header comment above).
+template <int D>
+std::unique_ptr<Effect<D>> makeSurfaceFitting(const Dictionary& dict, const FlowState<D>& s);
 
 }  // namespace shizuku

@@ -1,5 +1,6 @@
 // Volume-conservation shift, eq. (17); formula and sign in VolumeCorrection.hpp.
 #include "effects/VolumeCorrection.hpp"
+#include "effects/EffectParameters.hpp"
 #include <cmath>
 
 namespace shizuku {
@@ -42,7 +43,15 @@ void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& d
   count_ = count;
 }
 
+template <int D>
+std::unique_ptr<Effect<D>> makeVolumeCorrection(const Dictionary& d, const FlowState<D>&) {
+  return std::make_unique<VolumeCorrection<D>>(nonNegative(d, "C", 0.1));
+}
+
 template class VolumeCorrection<2>;
 template class VolumeCorrection<3>;
+
+template std::unique_ptr<Effect<2>> makeVolumeCorrection<2>(const Dictionary&, const FlowState<2>&);
+template std::unique_ptr<Effect<3>> makeVolumeCorrection<3>(const Dictionary&, const FlowState<3>&);
 
 }  // namespace shizuku

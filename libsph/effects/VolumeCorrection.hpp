@@ -19,11 +19,10 @@
 namespace shizuku {
 
 template <int D>
-class VolumeCorrection final : public Effect<D> {
+class VolumeCorrection final : public ShiftTerm<D> {
  public:
   explicit VolumeCorrection(double C) : C_(C) {}
   std::string name() const override { return "shifting/volumeCorrection"; }
-  EffectStage stage() const override { return EffectStage::shift; }
   std::string describe() const override;
   void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
   long lastActionCount() const override { return count_; }
@@ -33,5 +32,9 @@ class VolumeCorrection final : public Effect<D> {
   double C_;
   long count_ = 0;
 };
+
+// Builds the effect from its dictionary (keys in the header comment above).
+template <int D>
+std::unique_ptr<Effect<D>> makeVolumeCorrection(const Dictionary& dict, const FlowState<D>& s);
 
 }  // namespace shizuku

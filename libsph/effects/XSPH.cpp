@@ -1,5 +1,6 @@
 // XSPH advection velocity (methods.md 10); formula in XSPH.hpp.
 #include "effects/XSPH.hpp"
+#include "effects/EffectParameters.hpp"
 
 namespace shizuku {
 
@@ -25,7 +26,17 @@ void XSPH<D>::addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<
   count_ = count;
 }
 
+template <int D>
+std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& d, const FlowState<D>&) {
+  const double eps = nonNegative(d, "epsilon", 0.5);
+  if (eps > 1) d.error("epsilon", "must be <= 1");
+  return std::make_unique<XSPH<D>>(eps);
+}
+
 template class XSPH<2>;
 template class XSPH<3>;
+
+template std::unique_ptr<Effect<2>> makeXSPH<2>(const Dictionary&, const FlowState<2>&);
+template std::unique_ptr<Effect<3>> makeXSPH<3>(const Dictionary&, const FlowState<3>&);
 
 }  // namespace shizuku

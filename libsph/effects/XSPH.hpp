@@ -10,11 +10,10 @@
 namespace shizuku {
 
 template <int D>
-class XSPH final : public Effect<D> {
+class XSPH final : public AdvectionVelocityEffect<D> {
  public:
   explicit XSPH(double epsilon) : epsilon_(epsilon) {}
   std::string name() const override { return "xsph"; }
-  EffectStage stage() const override { return EffectStage::advection; }
   std::string describe() const override { return cat("epsilon = ", epsilon_, ", on free-surface and vicinity particles"); }
   void addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<D>>& uNew,
                             std::vector<Vec<D>>& du) override;
@@ -24,5 +23,9 @@ class XSPH final : public Effect<D> {
   double epsilon_;
   long count_ = 0;
 };
+
+// Builds the effect from its dictionary (keys in the header comment above).
+template <int D>
+std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& dict, const FlowState<D>& s);
 
 }  // namespace shizuku

@@ -8,7 +8,7 @@
 // File conservation.dat: time, volume, nominalVolume, kineticEnergy, momentum, angularMomentum.
 // Reads (controlDict functions/<name>): type conservation; writeControl; writeInterval.
 #pragma once
-#include "functionObjects/BlockReduce.hpp"
+#include "core/BlockReduce.hpp"
 #include "functionObjects/SampledFunctionObject.hpp"
 #include <optional>
 

@@ -1,6 +1,5 @@
 // Function object `densityError` (eq. 22): see DensityError.hpp.
 #include "functionObjects/DensityError.hpp"
-#include "functionObjects/BlockReduce.hpp"
 #include "io/TimeName.hpp"
 #include <cmath>
 #include <limits>
@@ -8,27 +7,6 @@
 
 namespace shizuku {
 
-namespace {
-struct Moments {
-  double nIn = 0, sumIn = 0, sum2In = 0, maxIn = 0;
-  double nAll = 0, sumAll = 0, sum2All = 0, maxAll = 0;
-  Moments& operator+=(const Moments& o) {
-    nIn += o.nIn; sumIn += o.sumIn; sum2In += o.sum2In; maxIn = std::max(maxIn, o.maxIn);
-    nAll += o.nAll; sumAll += o.sumAll; sum2All += o.sum2All; maxAll = std::max(maxAll, o.maxAll);
-    return *this;
-  }
-};
-
-DensityErrorStats finish(double n, double sum, double sum2, double maxAbs) {
-  DensityErrorStats st;
-  st.count = long(n);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  st.mean = n > 0 ? sum / n : nan;
-  st.rms = n > 0 ? std::sqrt(sum2 / n) : nan;
-  st.max = n > 0 ? maxAbs : nan;
-  return st;
-}
-}  // namespace
 
 template <int D>
 DensityError<D>::DensityError(const std::string& name, const Dictionary& dict)
@@ -59,20 +37,11 @@ const DensityErrorResult& DensityError<D>::evaluate(const FlowState<D>& s) {
   const auto& p = s.particles;
   const double rho0 = s.rho0;
   const std::size_t n = p.size();
-  const auto error = [&](std::size_t i) { return (rho0 - p.density[i]) / rho0 * 100.0; };
+  const auto error = [&](std::size_t i) { return densityErrorPercent(rho0, p.density[i]); };
 
-  // Moments: deterministic block sums.
-  thread_local std::vector<Moments> partial;
-  const Moments m = blockReduce(n, partial, [&](Moments& a, std::size_t i) {
-    if (!p.isFluid(i)) return;
-    const double e = error(i);
-    a.nAll += 1; a.sumAll += e; a.sum2All += e * e; a.maxAll = std::max(a.maxAll, std::abs(e));
-    if (p.surfaceClass(i) == SurfaceClass::interior) {
-      a.nIn += 1; a.sumIn += e; a.sum2In += e * e; a.maxIn = std::max(a.maxIn, std::abs(e));
-    }
-  });
-  result_.interior = finish(m.nIn, m.sumIn, m.sum2In, m.maxIn);
-  result_.all = finish(m.nAll, m.sumAll, m.sum2All, m.maxAll);
+  const DensityErrorSummary m = measureDensityError(s);
+  result_.interior = m.interior;
+  result_.all = m.all;
 
   // Histograms: per-thread counts (slot 0 below, 1..bins, bins+1 above), then added up.
   const int nb = bins_ + 2, threads = omp_get_max_threads();

@@ -15,14 +15,10 @@
 //   a histogram at every sample that is a write time (default), at every sample, or never)
 #pragma once
 #include "functionObjects/SampledFunctionObject.hpp"
+#include "operators/DensityErrorMeasure.hpp"
 #include <optional>
 
 namespace shizuku {
-
-struct DensityErrorStats {
-  long count = 0;
-  double mean = 0, rms = 0, max = 0, mode = 0;  // % (nan when count == 0)
-};
 
 struct DensityErrorResult {
   DensityErrorStats interior, all;

@@ -1,6 +1,6 @@
 // Function object `fluidExtent`: see FluidExtent.hpp (design.md 1.3).
 #include "functionObjects/FluidExtent.hpp"
-#include "functionObjects/BlockReduce.hpp"
+#include "core/BlockReduce.hpp"
 #include <limits>
 
 namespace shizuku {

@@ -67,22 +67,4 @@ class DerivativeOperator {
   FallbackThresholds thresholds_;
 };
 
-// Operators applied with precomputed weights (rows with order 255 give zero).
-template <int D>
-struct Ops {
-  static void gradient(const NeighbourList<D>& nl, const PairWeights<D>& pw, double V,
-                       const std::vector<double>& f, std::vector<Vec<D>>& out);
-  static void divergence(const NeighbourList<D>& nl, const PairWeights<D>& pw, double V,
-                         const std::vector<Vec<D>>& u, std::vector<double>& out);
-  static void laplacian(const NeighbourList<D>& nl, const PairWeights<D>& pw, double V,
-                        const std::vector<double>& f, std::vector<double>& out);
-  static void laplacian(const NeighbourList<D>& nl, const PairWeights<D>& pw, double V,
-                        const std::vector<Vec<D>>& u, std::vector<Vec<D>>& out);
-  static void velocityGradient(const NeighbourList<D>& nl, const PairWeights<D>& pw, double V,
-                               const std::vector<Vec<D>>& u, std::vector<Mat<D>>& out);  // out(a,b) = d u_a / d x_b
-  // Full Hessian of f at particle i by the FI system (SPH2 only; on demand, not per step).
-  static Mat<D> hessian(const Kernel<D>& kernel, double V, const NeighbourList<D>& nl,
-                        const std::vector<double>& f, std::size_t i);
-};
-
 }  // namespace shizuku

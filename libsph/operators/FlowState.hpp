@@ -5,7 +5,7 @@
 #pragma once
 #include "core/types.hpp"
 #include "kernels/Kernel.hpp"
-#include "operators/DerivativeOperator.hpp"
+#include "operators/Ops.hpp"
 #include "particles/NeighbourList.hpp"
 #include "particles/ParticleSet.hpp"
 
@@ -20,10 +20,8 @@ struct FlowState {
   PairWeights<D> weights;                // W, corrected gradient, Laplacian weights
   std::vector<std::uint8_t> isFluidMask; // 1 for fluid particles (weights are computed for them)
 
-  // constants
-  double d0 = 0, h = 0, rho0 = 1000, nu = 0;
-  Vec<D> g = Vec<D>::Zero();
-  bool gravity = false;
+  // constants (the effects keep their own: g in gravity, nu in viscosity)
+  double d0 = 0, h = 0, rho0 = 1000;
 
   // time
   double time = 0, dt = 0;

@@ -3,7 +3,7 @@
 // WeightRows.hpp; H_aa = X[D+a]/h^2, H_ab = X[mixed]/h^2. For tests and
 // diagnostics (not per step); entries are NaN/inf if M_i is singular.
 // Reads no dictionary keys.
-#include "operators/DerivativeOperator.hpp"
+#include "operators/Ops.hpp"
 #include "operators/WeightRows.hpp"
 #include <Eigen/LU>
 

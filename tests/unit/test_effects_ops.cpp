@@ -51,7 +51,7 @@ void periodicLattice(Fixture<D>& f, int n, double amp) {
 }
 
 template <int D>
-std::vector<Vec<D>> shiftOnce(Fixture<D>& f, Effect<D>& e) {
+std::vector<Vec<D>> shiftOnce(Fixture<D>& f, ShiftTerm<D>& e) {
   std::vector<Vec<D>> dr(f.s.size(), Vec<D>::Zero());
   e.addShift(f.s, dr);
   return dr;
@@ -60,7 +60,7 @@ std::vector<Vec<D>> shiftOnce(Fixture<D>& f, Effect<D>& e) {
 // Relax with the solver's sequence (update, shift, cap 0.1 h, move); returns the
 // density standard deviation after `iterations`.
 template <int D>
-double relax(Fixture<D>& f, Effect<D>& e, int iterations) {
+double relax(Fixture<D>& f, ShiftTerm<D>& e, int iterations) {
   for (int it = 0; it < iterations; ++it) {
     f.update();
     auto dr = shiftOnce(f, e);

@@ -1,11 +1,11 @@
-// Tests of registerShiftingEffects: every name builds its effect from the
+// Tests of the effect registry (registerBuiltinEffects): every name builds its effect from the
 // dictionary of system/sphSchemes with the documented defaults, stage and needs;
 // invalid values and unknown words are InputErrors naming the keyword.
 #define BOOST_TEST_MODULE effects_shiftingDictionary
 #include <boost/test/unit_test.hpp>
 #include "effects/ShiftingDistribution.hpp"
 #include "effects/SurfaceFitting.hpp"
-#include "effects/registerShiftingEffects.hpp"
+#include "effects/Effect.hpp"
 #include <iostream>
 
 using namespace shizuku;
@@ -33,7 +33,7 @@ badBand { minDistance 0.7; maxDistance 0.6; }
 template <int D>
 EffectRegistry<D> registry() {
   EffectRegistry<D> r;
-  registerShiftingEffects<D>(r);
+  registerBuiltinEffects<D>(r);
   return r;
 }
 

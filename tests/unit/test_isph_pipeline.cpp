@@ -11,6 +11,7 @@
 #include <boost/test/unit_test.hpp>
 #include "../support/TempCase.hpp"
 #include "core/Log.hpp"
+#include "io/TimeDirectory.hpp"
 #include "isph/Simulation.hpp"
 #include <filesystem>
 #include <fstream>

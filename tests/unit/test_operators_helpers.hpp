@@ -3,7 +3,7 @@
 // convergence orders.
 #pragma once
 #include "kernels/Kernel.hpp"
-#include "operators/DerivativeOperator.hpp"
+#include "operators/Ops.hpp"
 #include "particles/NeighbourList.hpp"
 #include <cmath>
 #include <random>

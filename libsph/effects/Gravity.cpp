@@ -1,0 +1,42 @@
+// Gravity: a uniform acceleration on every fluid particle (eq. 4).
+#include "effects/Gravity.hpp"
+
+namespace shizuku {
+namespace {
+
+template <int D>
+class Gravity final : public ForceEffect<D> {
+ public:
+  explicit Gravity(const Vec<D>& g) : g_(g) {}
+  std::string name() const override { return "gravity"; }
+  std::string describe() const override {
+    std::ostringstream os;
+    os << "g = (" << g_.transpose() << ") m/s^2";
+    return os.str();
+  }
+  TimeStepLimit timeStepLimit(const FlowState<D>& s) const override {
+    const double g = g_.norm();
+    return {g > 0 ? 0.25 * std::sqrt(s.h / g) : INFINITY, "force"};
+  }
+  void addAcceleration(const FlowState<D>& s, std::vector<Vec<D>>& acc) override {
+    const long n = long(s.size());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i)
+      if (s.isFluid(i)) acc[i] += g_;
+  }
+
+ private:
+  Vec<D> g_;
+};
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<Effect<D>> makeGravity(const Dictionary& gDict, const FlowState<D>&) {
+  return std::make_unique<Gravity<D>>(gDict.getVector<D>("value", dim::acceleration));
+}
+
+template std::unique_ptr<Effect<2>> makeGravity<2>(const Dictionary&, const FlowState<2>&);
+template std::unique_ptr<Effect<3>> makeGravity<3>(const Dictionary&, const FlowState<3>&);
+
+}  // namespace shizuku

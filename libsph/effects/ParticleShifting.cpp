@@ -1,0 +1,117 @@
+// Particle shifting, eq. (10): see ParticleShifting.hpp.
+#include "effects/ParticleShifting.hpp"
+#include "boundaries/WallParticles.hpp"
+#include "effects/EffectParameters.hpp"
+#include "effects/ShiftCap.hpp"
+
+namespace shizuku {
+
+template <int D>
+std::unique_ptr<ParticleShifting<D>> ParticleShifting<D>::create(const Dictionary* sh,
+                                                                 const EffectRegistry<D>& registry,
+                                                                 const FlowState<D>& s) {
+  if (!sh) return nullptr;
+  auto p = std::unique_ptr<ParticleShifting>(new ParticleShifting);
+  for (const char* term : {"distribution", "volumeCorrection", "surfaceFitting"})
+    if (const Dictionary* d = sh->subDictPtr(term)) {
+      std::unique_ptr<Effect<D>> e = registry.create(std::string("shifting/") + term, *d, s);
+      auto* t = dynamic_cast<ShiftTerm<D>*>(e.get());
+      if (!t) sh->error(term, "is not a shift term");
+      e.release();
+      p->terms_.emplace_back(t);
+    }
+  p->maxShift_ = positive(*sh, "maxShift", 0.1);
+  const std::string t = sh->getOptionOr(
+      "taylorCorrection", {"on", "yes", "true", "off", "no", "false", "everywhere", "belowSurface", "interior"}, "on");
+  if (t == "off" || t == "no" || t == "false") p->taylor_ = TaylorCorrection::off;
+  else if (t == "everywhere") p->taylor_ = TaylorCorrection::everywhere;
+  else if (t == "interior") p->taylor_ = TaylorCorrection::interior;
+  else p->taylor_ = TaylorCorrection::belowSurface;
+  if (p->terms_.empty()) return nullptr;
+  return p;
+}
+
+template <int D>
+bool ParticleShifting<D>::taylorCorrected(SurfaceClass c) const {
+  switch (taylor_) {
+    case TaylorCorrection::off: return false;
+    case TaylorCorrection::interior: return c == SurfaceClass::interior;
+    case TaylorCorrection::belowSurface: return c == SurfaceClass::interior || c == SurfaceClass::vicinity;
+    case TaylorCorrection::everywhere: return true;
+  }
+  return false;
+}
+
+template <int D>
+void ParticleShifting<D>::allocate(FlowState<D>& s) {
+  s.particles.shift.assign(s.size(), Vec<D>::Zero());
+  dr_.resize(s.size());
+  if (taylor_ != TaylorCorrection::off) gradU_.resize(s.size());
+  for (auto& t : terms_) t->allocate(s);
+}
+
+template <int D>
+EffectNeeds ParticleShifting<D>::needs() const {
+  EffectNeeds n;
+  for (const auto& t : terms_) n |= t->needs();
+  n.velocityGradient |= taylor_ != TaylorCorrection::off;
+  return n;
+}
+
+template <int D>
+void ParticleShifting<D>::registerTimers(StageTimers& timers) {
+  timer_ = timers.stage("shifting");
+  termTimer_.clear();
+  for (const auto& t : terms_) termTimer_.push_back(timers.stage(t->name()));
+}
+
+template <int D>
+std::string ParticleShifting<D>::describe() const {
+  const char* taylor = "";
+  switch (taylor_) {
+    case TaylorCorrection::off: break;
+    case TaylorCorrection::interior: taylor = ", Taylor-corrected velocity on interior particles"; break;
+    case TaylorCorrection::belowSurface: taylor = ", Taylor-corrected velocity on interior and vicinity particles"; break;
+    case TaylorCorrection::everywhere: taylor = ", Taylor-corrected velocity on every fluid particle"; break;
+  }
+  return cat("shift cap |dr| <= ", maxShift_, " h", taylor);
+}
+
+template <int D>
+void ParticleShifting<D>::apply(FlowState<D>& s, StageTimers& timers) {
+  auto& P = s.particles;
+  const long n = long(s.size());
+  {
+    StageTimers::Scope t(timers, timer_);
+    // Velocity gradient of u^{n+1} for the Taylor correction (walls show the fluid's Shepard velocity).
+    if (taylor_ != TaylorCorrection::off) {
+#pragma omp parallel for schedule(static)
+      for (long i = 0; i < n; ++i) s.uStar[i] = P.velocity[i];
+      shepardFluidVelocity(s, s.uStar);
+      Ops<D>::velocityGradient(s.neighbours, s.weights, s.V(), s.uStar, gradU_);
+    }
+    s.refreshPairGeometry();
+    s.computeDensity();
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) dr_[i].setZero();
+  }
+  for (std::size_t k = 0; k < terms_.size(); ++k) {
+    StageTimers::Scope t(timers, termTimer_[k]);
+    terms_[k]->addShift(s, dr_);
+  }
+  StageTimers::Scope t(timers, timer_);
+  capShift(dr_, maxShift_ * s.h);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    if (!s.isFluid(i)) { P.shift[i].setZero(); continue; }
+    P.position[i] += dr_[i];
+    if (s.periodic.any()) s.periodic.wrap(P.position[i]);
+    if (taylorCorrected(P.surfaceClass(i))) P.velocity[i] += gradU_[i] * dr_[i];
+    P.shift[i] = dr_[i];
+  }
+}
+
+template class ParticleShifting<2>;
+template class ParticleShifting<3>;
+
+}  // namespace shizuku

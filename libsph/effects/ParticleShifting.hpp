@@ -1,0 +1,50 @@
+// Particle shifting, step 10 of docs/method.md 13 (eq. 10): the sum of the shift terms
+// the case names (distribution OPS/DPS eqs. 11-14, volume correction eq. 17, surface
+// fitting eq. 19), capped at |dr_i| <= maxShift h, added to the fluid positions, and the
+// Taylor correction of the velocity u_i += <grad u>_i dr_i (docs/method.md 6) on the
+// particles where the velocity gradient is two-sided. One object owns the terms, the
+// cap and the correction; a case without shifting terms builds none of it.
+// Reads (system/sphSchemes, shifting): distribution {..} volumeCorrection {..}
+//   surfaceFitting {..} (each term's keys in its own header); maxShift 0.1 (times h);
+//   taylorCorrection on|belowSurface|interior|everywhere|off (on = belowSurface: interior
+//   and vicinity particles; on free-surface and splash particles the one-sided gradient
+//   is unreliable and the product pumps energy, docs/shifting.md).
+#pragma once
+#include "core/StageTimers.hpp"
+#include "effects/Effect.hpp"
+
+namespace shizuku {
+
+template <int D>
+class ParticleShifting {
+ public:
+  enum class TaylorCorrection { off, interior, belowSurface, everywhere };
+
+  // The shifting of the case, or null when `shifting` is absent or names no term.
+  static std::unique_ptr<ParticleShifting> create(const Dictionary* shifting, const EffectRegistry<D>& registry,
+                                                  const FlowState<D>& s);
+
+  // Sizes dr, <grad u> and particles.shift, and each term's own arrays.
+  void allocate(FlowState<D>& s);
+  EffectNeeds needs() const;
+  // Timed stages: "shifting" (gradient, density, cap and update) and one per term.
+  void registerTimers(StageTimers& timers);
+  // dr = cap(sum of the terms); r += dr; u += <grad u> dr where Taylor-corrected.
+  void apply(FlowState<D>& s, StageTimers& timers);
+
+  const std::vector<std::unique_ptr<ShiftTerm<D>>>& terms() const { return terms_; }
+  double maxShift() const { return maxShift_; }
+  std::string describe() const;  // the cap and the Taylor correction
+
+ private:
+  bool taylorCorrected(SurfaceClass c) const;
+  std::vector<std::unique_ptr<ShiftTerm<D>>> terms_;
+  std::vector<int> termTimer_;
+  int timer_ = -1;
+  double maxShift_ = 0.1;  // times h
+  TaylorCorrection taylor_ = TaylorCorrection::belowSurface;
+  std::vector<Vec<D>> dr_;
+  std::vector<Mat<D>> gradU_;
+};
+
+}  // namespace shizuku

@@ -1,0 +1,39 @@
+// The viscous force nu <lap u> of eq. (4) with the walls' velocity rule.
+#include "effects/Viscosity.hpp"
+
+namespace shizuku {
+namespace {
+
+template <int D>
+class Viscosity final : public ForceEffect<D> {
+ public:
+  Viscosity(double nu, WallVelocity walls) : nu_(nu), walls_(walls) {}
+  std::string name() const override { return "viscosity"; }
+  std::string describe() const override {
+    return cat("nu = ", nu_, " m^2/s, walls ", walls_ == WallVelocity::noSlip ? "noSlip" : "slip");
+  }
+  TimeStepLimit timeStepLimit(const FlowState<D>& s) const override { return {0.125 * s.h * s.h / nu_, "viscous"}; }
+  void addAcceleration(const FlowState<D>& s, std::vector<Vec<D>>& acc) override {
+    Ops<D>::addVelocityLaplacian(s.neighbours, s.weights, nu_ * s.V(), s.particles.velocity, s.isFluidMask, walls_,
+                                 acc);
+  }
+
+ private:
+  double nu_;
+  WallVelocity walls_;
+};
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<Effect<D>> makeViscosity(const Dictionary& props, const FlowState<D>&) {
+  const double nu = props.getScalarOr("nu", 0.0, dim::kinematicViscosity);
+  const std::string wall = props.getOptionOr("wallCondition", {"noSlip", "slip"}, "noSlip");
+  if (!(nu > 0)) props.error("nu", "must be > 0 for the viscous term");
+  return std::make_unique<Viscosity<D>>(nu, wall == "noSlip" ? WallVelocity::noSlip : WallVelocity::freeSlip);
+}
+
+template std::unique_ptr<Effect<2>> makeViscosity<2>(const Dictionary&, const FlowState<2>&);
+template std::unique_ptr<Effect<3>> makeViscosity<3>(const Dictionary&, const FlowState<3>&);
+
+}  // namespace shizuku

@@ -1,0 +1,100 @@
+// The set-up of a simulation from its case directory: see CaseSetup.hpp.
+#include "isph/CaseSetup.hpp"
+#include "io/TimeDirectory.hpp"
+#include "io/TimeName.hpp"
+#include "particles/ParticleGenerator.hpp"
+#include <cmath>
+
+namespace shizuku {
+
+template <int D>
+PhysicalConstants<D> CaseSetup<D>::readPhysicalConstants(const CaseFiles& files, FlowState<D>& s) {
+  const Dictionary& props = files.physicalProperties;
+  PhysicalConstants<D> c;
+  s.rho0 = props.getScalar("rho", dim::density);
+  if (!(s.rho0 > 0)) props.error("rho", "must be > 0");
+  c.nu = props.getScalarOr("nu", 0.0, dim::kinematicViscosity);
+  if (c.nu < 0) props.error("nu", "must be >= 0");
+  if (files.gravity) c.g = files.gravity->getVector<D>("value", dim::acceleration);
+  return c;
+}
+
+template <int D>
+NumericalScheme<D> CaseSetup<D>::readScheme(const CaseFiles& files, FlowState<D>& s) {
+  const Dictionary& sch = files.sphSchemes;
+  KernelType ktype = KernelType::cubicSpline;
+  double ratio = 1.2;
+  if (const Dictionary* k = sch.subDictPtr("kernel")) {
+    ktype = Kernel<D>::kernelTypeFromName(k->getOptionOr("type", {"cubicSpline", "WendlandC2"}, "cubicSpline"));
+    ratio = k->getScalarOr("smoothingLengthRatio", 1.2, dim::none);
+    if (!(ratio > 0.5 && ratio < 3)) k->error("smoothingLengthRatio", "must be between 0.5 and 3");
+  }
+  // The spacing comes from particlesDict (the generator checks it); h = ratio * d0.
+  s.d0 = files.particlesDict.getScalar("spacing", dim::length);
+  if (!(s.d0 > 0)) files.particlesDict.error("spacing", "must be > 0");
+  files.particlesDict.markRead("dimension");
+  s.h = ratio * s.d0;
+  s.kernel = Kernel<D>(ktype, s.h);
+  NumericalScheme<D> scheme;
+  scheme.derivatives = DerivativeOperator<D>::create(
+      derivativeSchemeFromName(sch.getOptionOr("derivatives", {"SPH2", "corrected", "standard"}, "SPH2")));
+  scheme.freeSurface = std::make_unique<FreeSurfaceDetector<D>>(
+      FreeSurfaceParameters::read(sch.subDictPtr("freeSurface"), D));
+  scheme.reorderInterval = sch.getIntOr("reorderInterval", 20);
+  if (scheme.reorderInterval < 0) sch.error("reorderInterval", "must be >= 0 (0: never)");
+  scheme.ppe = std::make_unique<PressureEquation<D>>(LinearSolver::create(files.sphSolution.subDictPtr("pressure")));
+  return scheme;
+}
+
+template <int D>
+std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunControl& rc, bool postProcessing,
+                                           FlowState<D>& s) {
+  // The generator always reads particlesDict (it checks it and gives the periodic box);
+  // its particles are used when the start time has none.
+  GeneratedParticles<D> gen = generateParticles<D>(files.particlesDict);
+  s.periodic = gen.periodic;
+  const auto times = listTimeDirectories(files.dir);
+  std::string startName;
+  if (!postProcessing) {
+    if (rc.startFrom == RunControl::StartFrom::latestTime && !times.empty()) startName = times.back().second;
+    else
+      for (const auto& t : times)
+        if (std::abs(t.first - rc.startTime) <= 1e-12 * std::max(1.0, std::abs(rc.startTime))) startName = t.second;
+  }
+  if (!startName.empty()) {
+    TimeState ts;
+    s.particles = readTimeDirectory<D>(files.dir, startName, ts);
+    s.time = ts.time;
+    s.step = ts.step;
+    s.dt = ts.deltaT;
+  } else {
+    s.particles = std::move(gen.set);
+    s.particles.rho0 = s.rho0;
+    s.particles.spacing = s.d0;
+    // Mass calibrated on the initial lattice so that <rho> = rho there (docs/method.md 2).
+    s.particles.mass = s.rho0 / s.kernel.latticeSum(s.d0);
+    s.time = rc.startTime;
+    s.step = 0;
+    s.dt = 0;
+    startName = timeName(s.time);
+  }
+  if (std::abs(s.particles.spacing - s.d0) > 1e-12 * s.d0)
+    files.particlesDict.error("spacing", cat("differs from the spacing of the saved particles (",
+                                            s.particles.spacing, " m)"));
+  auto& P = s.particles;
+  const std::size_t n = P.size();
+  P.density.resize(n);
+  P.surface.resize(n);
+  P.pressure.resize(n);
+  s.isFluidMask.resize(n);
+  for (std::size_t i = 0; i < n; ++i) s.isFluidMask[i] = P.isFluid(i);
+  if (P.countFluid() == 0) files.particlesDict.error("regions", "the case has no fluid particles");
+  s.uStar.resize(n);
+  s.acceleration.resize(n);
+  return startName;
+}
+
+template struct CaseSetup<2>;
+template struct CaseSetup<3>;
+
+}  // namespace shizuku

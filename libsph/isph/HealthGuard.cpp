@@ -1,0 +1,179 @@
+// The health checks after each step and the last good state: see HealthGuard.hpp.
+#include "isph/HealthGuard.hpp"
+#include "core/Log.hpp"
+#include "io/TimeName.hpp"
+#include "io/VtpFile.hpp"
+#include "operators/DensityErrorMeasure.hpp"
+#include <cmath>
+#include <filesystem>
+
+namespace shizuku {
+
+namespace fs = std::filesystem;
+
+template <int D>
+HealthGuard<D>::HealthGuard(const Dictionary& controlDict) {
+  if (const Dictionary* hc = controlDict.subDictPtr("healthChecks")) {
+    limits_.maxDensityErrorRms = hc->getScalarOr("maxDensityErrorRms", 20.0, dim::none);
+    limits_.domainMargin = hc->getScalarOr("domainMargin", 0.5, dim::none);
+    limits_.maxSpeed = hc->getScalarOr("maxSpeed", 0.0, dim::velocity);
+    if (!(limits_.maxSpeed >= 0)) hc->error("maxSpeed", "must be >= 0 (m/s; 0 chooses it from the case)");
+    if (!(limits_.domainMargin >= 0)) hc->error("domainMargin", "must be >= 0 (times the initial extent)");
+    if (!(limits_.maxDensityErrorRms > 0)) hc->error("maxDensityErrorRms", "must be > 0 (%)");
+  }
+}
+
+template <int D>
+void HealthGuard<D>::setLimits(const FlowState<D>& s, const Vec<D>& g) {
+  const auto& P = s.particles;
+  Vec<D> lo = P.position[0], hi = P.position[0];
+  for (const auto& x : P.position) { lo = lo.cwiseMin(x); hi = hi.cwiseMax(x); }
+  const Vec<D> ext = (hi - lo).cwiseMax(Vec<D>::Constant(s.d0));
+  limits_.domainMin = lo - limits_.domainMargin * ext;
+  limits_.domainMax = hi + limits_.domainMargin * ext;
+  // No flow of this case can exceed ten times the larger of its starting speed and the
+  // free-fall speed over the largest extent of the domain.
+  if (limits_.maxSpeed == 0) {
+    double u0 = 0;
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (P.isFluid(i)) u0 = std::max(u0, P.velocity[i].norm());
+    const double fall = std::sqrt(2 * g.norm() * ext.maxCoeff());
+    limits_.maxSpeed = std::max(u0, fall) > 0 ? 10 * std::max(u0, fall) : INFINITY;
+  }
+}
+
+template <int D>
+double HealthGuard<D>::check(const FlowState<D>& s, const char* where, const std::string& caseDir) {
+  const auto& P = s.particles;
+  const long n = long(s.size());
+  // Offending particles: every non-finite one and every one outside the domain box.
+  offending_.clear();
+  bool nonFinite = false;
+  double maxU = 0;
+  long fastest = -1;
+  for (long i = 0; i < n; ++i) {
+    if (!s.isFluid(i)) continue;
+    const bool finite = P.position[i].allFinite() && P.velocity[i].allFinite() && std::isfinite(P.pressure[i]);
+    bool outside = false;
+    for (int a = 0; a < D && finite; ++a)
+      outside |= P.position[i][a] < limits_.domainMin[a] || P.position[i][a] > limits_.domainMax[a];
+    if (!finite || outside) {
+      nonFinite |= !finite;
+      offending_.push_back(Index(i));
+      continue;
+    }
+    const double speed = P.velocity[i].norm();
+    if (speed > maxU) { maxU = speed; fastest = i; }
+  }
+  auto at = [&] { return cat(" at step ", s.step, ", time ", s.time); };  // built only on failure
+  auto id = [&](long i) { return P.id[std::size_t(i)]; };
+  if (!offending_.empty()) {
+    if (nonFinite) {
+      // Name a non-finite particle first.
+      for (std::size_t k = 0; k < offending_.size(); ++k) {
+        const Index i = offending_[k];
+        if (!(P.position[i].allFinite() && P.velocity[i].allFinite() && std::isfinite(P.pressure[i]))) {
+          std::swap(offending_[0], offending_[k]);
+          break;
+        }
+      }
+      fail(s, cat("non-finite position, velocity or pressure ", where, ": particle id ", id(offending_[0]), at()), caseDir);
+    }
+    fail(s, cat("particle id ", id(offending_[0]), " left the domain ", where, at(), " (position ",
+                P.position[offending_[0]].transpose(), "; limits set by healthChecks/domainMargin)"), caseDir);
+  }
+  if (maxU > limits_.maxSpeed) {
+    offending_.push_back(Index(fastest));
+    fail(s, cat("particle id ", id(fastest), " moves at ", maxU, " m/s ", where, at(), " (position ",
+                P.position[fastest].transpose(), ", ", surfaceClassName(P.surfaceClass(fastest)),
+                "), above healthChecks/maxSpeed ", limits_.maxSpeed, " m/s"), caseDir);
+  }
+  density_ = measureDensityError(s);
+  const auto& e = density_.interior;
+  if (e.count > 0 && e.rms > limits_.maxDensityErrorRms) {
+    const long worst = density_.worstInterior;
+    offending_.push_back(Index(worst));
+    fail(s, cat("interior density error rms ", e.rms, " % exceeds healthChecks/maxDensityErrorRms ",
+                limits_.maxDensityErrorRms, " %", at(), "; worst particle id ", id(worst), " (",
+                std::abs(densityErrorPercent(s.rho0, P.density[worst])), " %)"), caseDir);
+  }
+  return maxU;
+}
+
+template <int D>
+void HealthGuard<D>::fail(const FlowState<D>& s, const std::string& message, const std::string& caseDir) const {
+  const auto& P = s.particles;
+  std::string ids;
+  for (std::size_t k = 0; k < offending_.size() && k < 10; ++k) ids += cat(k ? " " : "", P.id[offending_[k]]);
+  if (offending_.size() > 10) ids += cat(" and ", offending_.size() - 10, " more");
+  const std::string file = writeOffendingParticles(s, caseDir);
+  throw NumericalError(cat(message, "; ", offending_.size(), " offending particle(s): id ", ids,
+                           file.empty() ? "" : cat(", written to ", file)));
+}
+
+// The offending particles of a failed health check, for ParaView:
+// postProcessing/healthChecks/<time>/offending.vtp. Returns the path ("" if it could not be written).
+template <int D>
+std::string HealthGuard<D>::writeOffendingParticles(const FlowState<D>& s, const std::string& caseDir) const {
+  try {
+    const auto& P = s.particles;
+    ParticleSet<D> sub;
+    sub.mass = P.mass;
+    sub.rho0 = P.rho0;
+    sub.spacing = P.spacing;
+    auto pick = [&](auto& dst, const auto& src) {
+      if (src.empty()) return;
+      dst.clear();
+      for (Index i : offending_) dst.push_back(src[i]);
+    };
+    pick(sub.position, P.position);
+    P.forEachField([&](const char* name, const auto& v) {
+      sub.forEachField([&](const char* n2, auto& w) {
+        if (std::string(name) == n2) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::decay_t<decltype(w)>>) pick(w, v);
+        }
+      });
+    });
+    TimeState ts;
+    ts.time = s.time;
+    ts.step = s.step;
+    ts.deltaT = s.dt;
+    ts.note = "offending particles of a failed health check";
+    const std::string dir = caseDir + "/postProcessing/healthChecks/" + timeName(s.time);
+    fs::create_directories(dir);
+    writeVtp<D>(dir + "/offending.vtp", sub, ts);
+    return dir + "/offending.vtp";
+  } catch (const std::exception& e) {
+    Log::get().warning(cat("could not write the offending particles: ", e.what()));
+    return "";
+  }
+}
+
+template <int D>
+void HealthGuard<D>::saveGoodState(const FlowState<D>& s) {
+  const auto& P = s.particles;
+  goodX_ = P.position;  // same size every step: no reallocation after the first
+  goodU_ = P.velocity;
+  goodP_ = P.pressure;
+  goodId_ = P.id;
+  goodTime_ = s.time;
+  goodStep_ = s.step;
+  goodDt_ = s.dt;
+}
+
+template <int D>
+void HealthGuard<D>::restoreGoodState(FlowState<D>& s) const {
+  auto& P = s.particles;
+  P.position = goodX_;
+  P.velocity = goodU_;
+  P.pressure = goodP_;
+  P.id = goodId_;
+  s.time = goodTime_;
+  s.step = goodStep_;
+  s.dt = goodDt_;
+}
+
+template class HealthGuard<2>;
+template class HealthGuard<3>;
+
+}  // namespace shizuku

@@ -1,0 +1,224 @@
+// The stages of one ISPH time step (docs/method.md 13): see IsphStep.hpp.
+#include "isph/IsphStep.hpp"
+#include "boundaries/WallParticles.hpp"
+#include "surface/SurfaceFit.hpp"
+
+namespace shizuku {
+
+template <int D>
+IsphStep<D>::IsphStep(FlowState<D>& s, NumericalScheme<D> scheme, EffectSet<D> effects, StageTimers& timers)
+    : s_(s), scheme_(std::move(scheme)), effects_(std::move(effects)), timers_(timers) {
+  needs_ = effects_.needs();
+  effects_.allocate(s_);
+  if (needs_.surfaceFit) {
+    s_.fitDistance.assign(s_.size(), NAN);
+    s_.fitNormal.assign(s_.size(), Vec<D>::Zero());
+    s_.curvature.assign(s_.size(), NAN);
+  }
+  if (!effects_.advectionVelocities.empty()) du_.resize(s_.size());
+  search_ = std::make_unique<NeighbourSearch<D>>(s_.kernel.support(), s_.periodic);
+  source_.resize(s_.size());
+  // Timed stages in execution order (the timing columns follow it); optional stages
+  // exist only when an active effect runs them.
+  st_.neighbours = timers_.stage("neighbours");
+  st_.weights = timers_.stage("weights");
+  st_.density = timers_.stage("density");
+  st_.freeSurface = timers_.stage("freeSurface");
+  st_.surfaceFit = needs_.surfaceFit ? timers_.stage("surfaceFit") : -1;
+  st_.predictor = timers_.stage("predictor");
+  st_.ppeAssembly = timers_.stage("ppeAssembly");
+  st_.ppeSolve = timers_.stage("ppeSolve");
+  st_.corrector = timers_.stage("corrector");
+  st_.advection = timers_.stage("advection");
+  for (const auto& e : effects_.advectionVelocities) advectionTimer_.push_back(timers_.stage(e->name()));
+  st_.positionCorrections = effects_.positionCorrections.empty() ? -1 : timers_.stage("ads");
+  if (effects_.shifting) effects_.shifting->registerTimers(timers_);
+}
+
+template <int D>
+void IsphStep<D>::analyse() {
+  auto& P = s_.particles;
+  { StageTimers::Scope t(timers_, st_.neighbours); search_->build(P.position, s_.neighbours); }
+  {
+    StageTimers::Scope t(timers_, st_.density);
+    // Kernel values of every pair (the operator below refills the fluid rows with
+    // identical values): <rho>, the Shepard wall velocity and the Adami rows use them.
+    const auto& nl = s_.neighbours;
+    const long n = long(s_.size());
+    s_.weights.w.resize(nl.numPairs());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i)
+      for (Index k = nl.begin(i); k < nl.end(i); ++k) s_.weights.w[k] = s_.kernel.w(nl.r[k]);
+    s_.computeDensity();
+  }
+  { StageTimers::Scope t(timers_, st_.freeSurface); scheme_.freeSurface->detect(s_); }
+  {
+    StageTimers::Scope t(timers_, st_.weights);
+    // Fluid rows: 1 = the full operator, 2 = free-surface rows (first order at most),
+    // 3 = splash rows (standard weights; DerivativeOperator.hpp).
+    const long n = long(s_.size());
+    weightRows_.resize(n);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      const SurfaceClass c = P.surfaceClass(i);
+      weightRows_[i] = !s_.isFluid(i) ? 0 : c == SurfaceClass::splash ? 3 : c == SurfaceClass::free ? 2 : 1;
+    }
+    scheme_.derivatives->computeWeights(s_.kernel, s_.V(), s_.neighbours, weightRows_, s_.weights);
+  }
+  if (needs_.surfaceFit) { StageTimers::Scope t(timers_, st_.surfaceFit); computeSurfaceFit(s_); }
+}
+
+template <int D>
+void IsphStep<D>::predict() {
+  StageTimers::Scope t(timers_, st_.predictor);
+  auto& acc = s_.acceleration;
+  const long n = long(s_.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) acc[i].setZero();
+  for (auto& e : effects_.forces) e->addAcceleration(s_, acc);
+  const auto& u = s_.particles.velocity;
+  const double dt = s_.dt;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) s_.uStar[i] = s_.isFluid(i) ? Vec<D>(u[i] + dt * acc[i]) : u[i];
+  shepardFluidVelocity(s_, s_.uStar);
+}
+
+template <int D>
+void IsphStep<D>::solvePressure() {
+  {
+    StageTimers::Scope t(timers_, st_.ppeAssembly);
+    Ops<D>::divergence(s_.neighbours, s_.weights, s_.rho0 / s_.dt * s_.V(), s_.uStar, source_, &s_.isFluidMask);
+    for (auto& e : effects_.pressureSources) e->addPressureSource(s_, source_);
+    scheme_.ppe->assemble(s_, source_);
+  }
+  StageTimers::Scope t(timers_, st_.ppeSolve);
+  report_.ppe = scheme_.ppe->solve(s_);
+  report_.ppeUnknowns = scheme_.ppe->numUnknowns();
+  report_.ppeStandardRows = scheme_.ppe->standardRows();
+  if (report_.ppe.usedFallback && ++ppeFallbacks_ <= 10)
+    Log::get().warning(cat("step ", s_.step + 1, ": ", report_.ppe.message,
+                           ppeFallbacks_ == 10 ? " (further fallbacks are counted, not shown)" : ""));
+  if (!report_.ppe.ok)
+    throw NumericalError(cat("pressure Poisson equation failed at step ", s_.step + 1, ", time ", s_.time, ": ",
+                             report_.ppe.message));
+}
+
+template <int D>
+void IsphStep<D>::correct() {
+  StageTimers::Scope t(timers_, st_.corrector);
+  auto& P = s_.particles;
+  Ops<D>::gradient(s_.neighbours, s_.weights, s_.dt / s_.rho0 * s_.V(), P.pressure, gradP_, &s_.isFluidMask);
+  const long n = long(s_.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    if (s_.isFluid(i)) P.velocity[i] = s_.uStar[i] - gradP_[i];
+}
+
+template <int D>
+void IsphStep<D>::advect() {
+  auto& P = s_.particles;
+  const long n = long(s_.size());
+  const bool extra = !du_.empty();
+  if (extra) {
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) du_[i].setZero();
+    for (std::size_t k = 0; k < effects_.advectionVelocities.size(); ++k) {
+      StageTimers::Scope t(timers_, advectionTimer_[k]);
+      effects_.advectionVelocities[k]->addAdvectionVelocity(s_, P.velocity, du_);
+    }
+  }
+  StageTimers::Scope t(timers_, st_.advection);
+  const double dt = s_.dt;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    if (!s_.isFluid(i)) continue;
+    P.position[i] += dt * (extra ? Vec<D>(P.velocity[i] + du_[i]) : P.velocity[i]);
+    if (s_.periodic.any()) s_.periodic.wrap(P.position[i]);
+  }
+}
+
+template <int D>
+void IsphStep<D>::correctPositions() {
+  if (effects_.positionCorrections.empty()) return;
+  StageTimers::Scope t(timers_, st_.positionCorrections);
+  s_.refreshPairGeometry();
+  for (auto& e : effects_.positionCorrections) {
+    e->correctPositions(s_);
+    report_.adsCount = e->lastActionCount();
+  }
+  if (s_.periodic.any())
+    for (std::size_t i = 0; i < s_.size(); ++i)
+      if (s_.isFluid(i)) s_.periodic.wrap(s_.particles.position[i]);
+}
+
+template <int D>
+void IsphStep<D>::shift() {
+  if (effects_.shifting) effects_.shifting->apply(s_, timers_);
+}
+
+template <int D>
+void IsphStep<D>::advance(double dt) {
+  s_.dt = dt;
+  predict();
+  solvePressure();
+  correct();
+  advect();
+  correctPositions();
+  shift();
+  s_.time += dt;
+  ++s_.step;
+}
+
+template <int D>
+void IsphStep<D>::reorderParticles() {
+  auto& P = s_.particles;
+  const std::vector<Index> perm = search_->cellOrder(P.position);
+  auto apply = [&](auto& v) {
+    if (v.empty()) return;
+    // One scratch copy per field type, kept between reorderings (no allocation once
+    // it has the capacity; reordering runs on one thread).
+    static std::remove_reference_t<decltype(v)> copy;
+    copy = v;
+    for (std::size_t k = 0; k < perm.size(); ++k) v[k] = copy[perm[k]];
+  };
+  apply(P.position);
+  P.forEachField([&](const char*, auto& v) { apply(v); });
+  for (std::size_t i = 0; i < P.size(); ++i) s_.isFluidMask[i] = P.isFluid(i);
+}
+
+template <int D>
+std::vector<std::string> IsphStep<D>::describe() const {
+  std::vector<std::string> v;
+  auto line = [&](const std::string& what) { v.push_back(what); };
+  const int reorder = scheme_.reorderInterval;
+  line(cat("neighbours: cell-linked list, radius 2h = ", s_.kernel.support(), " m", s_.periodic.any() ? ", periodic" : "",
+           reorder > 0 ? cat(", reorder every ", reorder, " steps") : ""));
+  line(cat("density: summation <rho> (eq. 18), ",
+           s_.kernel.type() == KernelType::cubicSpline ? "cubic spline" : "Wendland C2", " kernel, mass ",
+           s_.particles.mass));
+  const auto& fp = scheme_.freeSurface->parameters();
+  line(fp.enabled ? cat("free surface: divR < ", fp.candidateThreshold, fp.scanRegion ? " + scan region" : "",
+                        ", splash < ", fp.splashThreshold, ", vicinity ", fp.vicinityRadius, " h")
+                  : std::string("free surface: off (closed domain, pressure level pinned)"));
+  if (needs_.surfaceFit) line("surface fit: leave-one-out line fit, curvature (eqs 19-21)");
+  line(cat("derivatives: ", toString(scheme_.derivatives->scheme())));
+  for (const auto& e : effects_.forces) line(cat("predictor force: ", e->name(), " (", e->describe(), ")"));
+  line(cat("pressure Poisson equation: source rho/dt <div u*> (eq. 6), ", scheme_.ppe->solver().describe()));
+  for (const auto& e : effects_.pressureSources) line(cat("  + ", e->name(), " (", e->describe(), ")"));
+  line("corrector: u = u* - dt/rho <grad p> (eq. 5)");
+  line("advection: r = r + dt u (eq. 7)");
+  for (const auto& e : effects_.advectionVelocities) line(cat(e->name(), " (", e->describe(), ")"));
+  for (const auto& e : effects_.positionCorrections) line(cat(e->name(), " (", e->describe(), ")"));
+  if (effects_.shifting) {
+    for (const auto& e : effects_.shifting->terms()) line(cat(e->name(), " (", e->describe(), ")"));
+    line(effects_.shifting->describe());
+  } else {
+    line("shifting: off");
+  }
+  return v;
+}
+
+template class IsphStep<2>;
+template class IsphStep<3>;
+
+}  // namespace shizuku

@@ -1,0 +1,89 @@
+// One ISPH time step as docs/method.md 13 lists it, each stage a named function that calls
+// the named operators (operators/Ops.hpp) and the effects of its stage:
+//   1-4  analyse():        neighbours, <rho> (eq. 18), free surface and normals, operator weights
+//   5    predict():        u* = u^n + dt (forces: g, nu <lap u^n>)                   (eq. 4)
+//   6    solvePressure():  <lap p> = rho/dt <div u*> [+ pressure sources, eq. 9]     (eqs. 6, 9)
+//   7    correct():        u^{n+1} = u* - dt/rho <grad p>                            (eq. 5)
+//   8    advect():         r' = r^n + dt (u^{n+1} + advection velocities, XSPH)      (eq. 7)
+//   9    correctPositions(): position corrections after advection (ADS)
+//   10   shift():          particle shifting, capped, Taylor-corrected u (eq. 10)
+// The step owns the numerical scheme (derivative operator, neighbour search, free-surface
+// detector, pressure equation), the effects and its scratch arrays (sized once).
+// Reads no dictionary keys (CaseSetup builds its parts).
+#pragma once
+#include "core/StageTimers.hpp"
+#include "effects/EffectSet.hpp"
+#include "pressure/PressureEquation.hpp"
+#include "surface/FreeSurface.hpp"
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace shizuku {
+
+// The numerical scheme of a case, as CaseSetup reads it from system/sphSchemes and sphSolution.
+template <int D>
+struct NumericalScheme {
+  std::unique_ptr<DerivativeOperator<D>> derivatives;
+  std::unique_ptr<FreeSurfaceDetector<D>> freeSurface;
+  std::unique_ptr<PressureEquation<D>> ppe;
+  int reorderInterval = 20;  // steps between cell reorderings of the particles (0: never)
+};
+
+// Statistics of the last step, for the progress line and tests.
+struct StepReport {
+  LinearSolveResult ppe;
+  long ppeUnknowns = 0;
+  long ppeStandardRows = 0;   // Laplacian rows that fell back to the standard weights
+  double maxSpeed = 0;
+  long adsCount = -1;
+  std::string dtLimiter = "fixed";
+};
+
+template <int D>
+class IsphStep {
+ public:
+  // Registers the step's timed stages in `timers`, in execution order.
+  IsphStep(FlowState<D>& s, NumericalScheme<D> scheme, EffectSet<D> effects, StageTimers& timers);
+
+  // Steps 1-4 at the current positions.
+  void analyse();
+  // Steps 5-10 with time step dt, then time += dt and step += 1.
+  void advance(double dt);
+  // Sorts the particles along the neighbour cells (memory locality); the analysis must follow.
+  void reorderParticles();
+
+  const EffectSet<D>& effects() const { return effects_; }
+  const NumericalScheme<D>& scheme() const { return scheme_; }
+  StepReport& report() { return report_; }
+  const StepReport& report() const { return report_; }
+  long ppeFallbacks() const { return ppeFallbacks_; }
+  // The stages in execution order with their parameters and units, one per line.
+  std::vector<std::string> describe() const;
+
+ private:
+  void predict();
+  void solvePressure();
+  void correct();
+  void advect();
+  void correctPositions();
+  void shift();
+
+  FlowState<D>& s_;
+  NumericalScheme<D> scheme_;
+  EffectSet<D> effects_;
+  EffectNeeds needs_;
+  std::unique_ptr<NeighbourSearch<D>> search_;
+  StageTimers& timers_;
+  struct StageIds { int neighbours, density, freeSurface, surfaceFit, weights, predictor, ppeAssembly, ppeSolve,
+                    corrector, advection, positionCorrections; } st_{};
+  std::vector<int> advectionTimer_;  // per advection-velocity effect
+  StepReport report_;
+  long ppeFallbacks_ = 0;
+  // Scratch (sized once).
+  std::vector<double> source_;
+  std::vector<std::uint8_t> weightRows_;
+  std::vector<Vec<D>> du_, gradP_;
+};
+
+}  // namespace shizuku

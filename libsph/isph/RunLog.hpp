@@ -1,0 +1,38 @@
+// What the log says while a case runs (docs/design.md 1.3): the progress line every
+// `progressInterval` steps and the summary at the end (wall time per stage, particle-steps
+// per second, files written). Reads no dictionary keys.
+#pragma once
+#include "core/StageTimers.hpp"
+#include "isph/IsphStep.hpp"
+#include <string>
+#include <vector>
+
+namespace shizuku {
+
+// "12.5 s", "3.1 min", "1.25 h"; "?" when not finite.
+std::string formatSeconds(double seconds);
+
+struct ProgressInfo {
+  long step = 0;
+  double time = 0, dt = 0;
+  double densityErrorRms = 0;  // interior, % (eq. 22)
+  double fractionDone = 0;
+  double wallSeconds = 0;
+};
+
+// "step N  t = ..  dt = .. (limiter)  PPE .. it, res ..  max|U| = ..  rhoErr rms = .. %  ADS ..  x% done, ETA .."
+std::string progressLine(const ProgressInfo& p, const StepReport& r);
+
+struct RunSummary {
+  long steps = 0;
+  double simulated = 0, wallSeconds = 0, particleSteps = 0;
+  long ppeFallbacks = 0;
+  std::string caseDir;
+  std::vector<std::string> written;  // time names
+  bool functionObjects = false;
+};
+
+// The closing lines of a run, one string per line.
+std::vector<std::string> summaryLines(const RunSummary& r, const StageTimers& timers);
+
+}  // namespace shizuku
