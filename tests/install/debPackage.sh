@@ -2,7 +2,7 @@
 # `cpack -G DEB` in the build folder makes the package shizuku: /usr/bin/shizuku and
 # the other programs, the tutorials under /usr/share/shizuku/tutorials, etc/bashrc;
 # a maintainer, a description, and Depends naming only packages Debian knows
-# (installed here, or available to apt).
+# (installed here, or available to apt); the packaged shizuku -version runs.
 #   debPackage.sh BUILD
 set -e
 build=$(cd "$1" && pwd)
@@ -18,6 +18,8 @@ for f in ./usr/bin/shizuku ./usr/bin/shizukuParticles ./usr/bin/shizukuPostProce
          ./usr/share/doc/shizuku/README.md; do
     grep -qx "$f" "$tmp/contents" || fail "$f not in $(basename "$deb")"
 done
+dpkg-deb -x "$deb" "$tmp/root"
+"$tmp/root/usr/bin/shizuku" -version > /dev/null || fail "the packaged shizuku -version"
 [ "$(dpkg-deb -f "$deb" Package)" = shizuku ] || fail "package name"
 [ -n "$(dpkg-deb -f "$deb" Maintainer)" ] || fail "no maintainer"
 [ -n "$(dpkg-deb -f "$deb" Description)" ] || fail "no description"
