@@ -11,7 +11,7 @@
 // wallMs,cpuMs,iterations,maxResidual,failures.
 #include "core/Log.hpp"
 #include "isph/Simulation.hpp"
-#include "pressure/LinearSolver.hpp"
+#include "linearSolvers/LinearSolver.hpp"
 #include <chrono>
 #include <cstdio>
 #include <ctime>

@@ -216,7 +216,7 @@ def write(csvPath, mdPath, quick):
     add("(after its warm-up steps, particles reordered by cell as in a real run) and solves the same sequence with")
     add("each backend. Time per solve (wall: best of the passes; CPU: all threads), BiCGSTAB relative tolerance")
     add("1e-8, warm start from the previous pressure. AMG = the own smoothed-aggregation AMG")
-    add("(libsph/pressure/AggregationAMG) as the BiCGSTAB preconditioner, hierarchy kept up to 10 steps (AMG) or")
+    add("(libsph/linearSolvers/AggregationAMG) as the BiCGSTAB preconditioner, hierarchy kept up to 10 steps (AMG) or")
     add("rebuilt every step (AMG-everyStep); ILU0 = block ILU(0) (one block per thread); ILUT = Eigen")
     add("IncompleteLUT (drop 1e-4, fill 10); KLU/UMFPACK = direct, symbolic analysis kept while the pattern is")
     add("unchanged (in a flowing case it changes almost every step).")

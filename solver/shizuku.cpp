@@ -3,6 +3,7 @@
 //   shizuku -case tutorials/damBreak          run the case
 //   shizuku -case DIR -dryRun                 read and check everything, print the pipeline, exit 0
 //   shizuku -case DIR -noFunctionObjects      run without function objects
+//   shizuku -version                          print the version and the commit it was built from
 //
 // Reads the case directory, generates the initial particles from
 // system/particlesDict when 0/ holds none, runs the time loop and writes time
@@ -12,6 +13,7 @@
 #include "core/CommandLine.hpp"
 #include "core/Log.hpp"
 #include "isph/Simulation.hpp"
+#include "ShizukuCommit.hpp"  // generated at build time (cmake/ShizukuCommit.cmake)
 #include <boost/program_options.hpp>
 #include <ctime>
 #include <iostream>
@@ -22,6 +24,10 @@ namespace po = boost::program_options;
 using namespace shizuku;
 
 namespace {
+
+// "Shizuku <version> (commit <short sha>[-dirty])", or "(commit unknown)" when
+// built outside a git work tree.
+constexpr const char* kVersion = "Shizuku " SHIZUKU_VERSION " (commit " SHIZUKU_COMMIT ")";
 
 template <int D>
 int runCase(const std::string& dir, bool dryRun, bool functionObjects) {
@@ -43,6 +49,7 @@ int main(int argc, char** argv) {
   po::options_description desc("shizuku: incompressible SPH (ISPH) solver for free-surface flow\nOptions");
   desc.add_options()
       ("help,h", "print this help and exit")
+      ("version", "print the version and the commit the program was built from, and exit")
       ("case", po::value<std::string>()->default_value("."), "case directory (default: the current folder)")
       ("dryRun", "read and check the whole case, print the active pipeline and exit 0 without running")
       ("noFunctionObjects", "run without function objects")
@@ -52,6 +59,10 @@ int main(int argc, char** argv) {
   if (auto status = parseCommandLine(argc, argv, "shizuku", desc, vm,
                                      "Exit status: 0 success, 1 bad input, 2 numerical failure.\n"))
     return *status;
+  if (vm.count("version")) {
+    std::cout << kVersion << "\n";
+    return 0;
+  }
   const std::string dir = vm["case"].as<std::string>();
   if (vm["threads"].as<int>() > 0) omp_set_num_threads(vm["threads"].as<int>());
 
@@ -62,7 +73,7 @@ int main(int argc, char** argv) {
   const std::time_t now = std::time(nullptr);
   char date[64];
   std::strftime(date, sizeof date, "%Y-%m-%d %H:%M:%S %Z", std::localtime(&now));
-  info("Shizuku " SHIZUKU_VERSION " - incompressible SPH with SPH(2) operators and density-corrected shifting");
+  info(cat(kVersion, " - incompressible SPH with SPH(2) operators and density-corrected shifting"));
   info(cat("Command : ", command));
   info(cat("Case    : ", dir));
   info(cat("Threads : ", omp_get_max_threads()));

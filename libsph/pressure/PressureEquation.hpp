@@ -13,7 +13,7 @@
 // No allocation once the buffers have grown to the largest size seen.
 #pragma once
 #include "operators/FlowState.hpp"
-#include "pressure/LinearSolver.hpp"
+#include "linearSolvers/LinearSolver.hpp"
 
 namespace shizuku {
 

@@ -221,12 +221,9 @@ def main():
 
     src = os.path.abspath(a.tutorial)
     name = os.path.basename(src.rstrip("/"))
-    # Allrun sources ../../etc/tutorialFunctions: the copy lives at WORK/run/<name> next
-    # to a link WORK/etc -> REPO/etc, as a user's copy would two levels below the repository.
+    # Allrun sources $SHIZUKU_DIR/etc/tutorialFunctions (SHIZUKU_DIR=REPO below), as a
+    # user's copy with etc/bashrc sourced does.
     case = os.path.abspath(os.path.join(a.work, "run", name))
-    etc = os.path.join(a.work, "etc")
-    if not os.path.exists(etc):
-        os.symlink(os.path.join(os.path.abspath(a.repo), "etc"), etc)
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(src, case, ignore=shutil.ignore_patterns("[0-9]*", "postProcessing", "plots", "log.*",
                                                               "particles.pvd"))

@@ -17,7 +17,7 @@
 #include "../support/TempCase.hpp"
 #include "core/Log.hpp"
 #include "isph/Simulation.hpp"
-#include "pressure/LinearSolver.hpp"
+#include "linearSolvers/LinearSolver.hpp"
 #include <atomic>
 #include <cstdlib>
 #include <cstring>

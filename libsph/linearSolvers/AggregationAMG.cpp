@@ -1,5 +1,5 @@
 // Smoothed-aggregation AMG preconditioner (see AggregationAMG.hpp for the method).
-#include "pressure/AggregationAMG.hpp"
+#include "linearSolvers/AggregationAMG.hpp"
 #include "core/Log.hpp"
 #include "core/types.hpp"
 #include <string>

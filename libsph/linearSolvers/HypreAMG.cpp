@@ -1,4 +1,4 @@
-// Algebraic multigrid preconditioner for the PPE (methods.md 4.2; issue 9 item 3):
+// Algebraic multigrid preconditioner for the PPE (methods.md 4.2):
 // one BoomerAMG V-cycle of hypre (Debian libhypre-dev) per application, inside
 // the OpenMP BiCGSTAB of Krylov.cpp. Settings are hypre's recommendations for
 // Poisson-like non-symmetric 2D/3D matrices: HMIS coarsening, extended+i
@@ -13,7 +13,7 @@
 // MPI is initialised (as a single process) on first use and finalised at exit.
 // Keys (LinearSolver::create): preconditioner hypreAMG; amgReuse 10.
 #include "core/Log.hpp"
-#include "pressure/SolverBackends.hpp"
+#include "linearSolvers/SolverBackends.hpp"
 #include <algorithm>
 #include <cstdlib>
 #include <numeric>

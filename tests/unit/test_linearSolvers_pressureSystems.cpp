@@ -1,4 +1,4 @@
-// The PPE linear-solver backends (libsph/pressure: Krylov, Preconditioner,
+// The PPE linear-solver backends (libsph/linearSolvers: Krylov, Preconditioner,
 // IterativeSolver, DirectSolvers, HypreAMG) against known answers:
 //  - a manufactured non-symmetric system shaped like the PPE (2D 9-point
 //    Laplacian-like rows with an upwind-like skew, Dirichlet identity rows): every
@@ -9,12 +9,12 @@
 //  - direct solvers that keep the symbolic analysis give right answers for a
 //    matrix with the same pattern and new values, and then for a new pattern;
 //  - the factory rejects unknown names and settings.
-#define BOOST_TEST_MODULE pressure_solvers
+#define BOOST_TEST_MODULE linearSolvers_pressureSystems
 #include <boost/test/unit_test.hpp>
 #include "core/types.hpp"
-#include "pressure/AggregationAMG.hpp"
-#include "pressure/Krylov.hpp"
-#include "pressure/LinearSolver.hpp"
+#include "linearSolvers/AggregationAMG.hpp"
+#include "linearSolvers/Krylov.hpp"
+#include "linearSolvers/LinearSolver.hpp"
 #include <cmath>
 #include <random>
 

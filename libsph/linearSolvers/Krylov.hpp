@@ -6,7 +6,7 @@
 // largest size. Convergence: ||b - A x|| <= tolerance ||b|| on the recursively
 // updated residual; the caller checks the true residual.
 #pragma once
-#include "pressure/Preconditioner.hpp"
+#include "linearSolvers/Preconditioner.hpp"
 
 namespace shizuku {
 

@@ -1,11 +1,24 @@
-// Sparse linear solvers for the pressure Poisson equation behind one
-// interface (design.md part 2, methods.md 4.2), chosen in system/sphSolution:
+// The pressure solver's interface: LinearSolver (solve A x = b) and its factory
+// LinearSolver::create, which reads the `pressure` sub-dictionary of system/sphSolution
+// (design.md part 2, methods.md 4.2):
 //   pressure { solver BiCGSTAB|UMFPACK|KLU|SparseLU; tolerance 1e-8; maxIterations 2000;
-//              preconditioner ILU0|ILUT|diagonal; blocks 0; dropTolerance 1e-4; fillFactor 10;
-//              reuseSymbolic yes; }
-// BiCGSTAB is warm-started from the x it is given (the last pressure). Every
-// backend keeps its buffers between calls (see the .cpp files for what each
-// external library still allocates inside).
+//              preconditioner AMG|ILU0|ILUT|diagonal|hypreAMG; amgReuse 10; blocks 0;
+//              dropTolerance 1e-4; fillFactor 10; reuseSymbolic yes; }
+// This library (libsph/linearSolvers) owns that interface and every backend behind
+// it; it depends on core only and sees the system as plain compressed rows, never
+// particles or operators (libsph/pressure assembles the rows and calls solve()).
+// A new backend (a 3D AMG, PETSc or hypre across MPI ranks) is added here, behind
+// this interface, and built by create(); the pressure equation does not change.
+// Contract of every backend:
+//   - deterministic: the same matrix, right-hand side, initial guess x and reuse
+//     state (a kept preconditioner or symbolic analysis, and numberingChanged()
+//     calls) give the same x bit for bit on the same number of threads (or ranks):
+//     sums in a fixed order, no dependence on timing (no dynamic schedules or
+//     atomics in reductions). A restart from a time directory then continues
+//     exactly as the uninterrupted run (faults.restartBitwise, docs/output.md);
+//   - BiCGSTAB is warm-started from the x it is given (the last pressure);
+//   - buffers are kept between calls (see the .cpp files for what each external
+//     library still allocates inside).
 #pragma once
 #include "core/Dictionary.hpp"
 #include <Eigen/Sparse>

@@ -6,8 +6,8 @@
 // fails, one direct SparseLU solve rescues the step and says so.
 // Keys: tolerance, maxIterations, preconditioner, blocks, dropTolerance, fillFactor.
 #include "core/Log.hpp"
-#include "pressure/Krylov.hpp"
-#include "pressure/SolverBackends.hpp"
+#include "linearSolvers/Krylov.hpp"
+#include "linearSolvers/SolverBackends.hpp"
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseLU>
 #include <cmath>

@@ -4,7 +4,7 @@
 //   z = M^-1 s;  t = A z;  omega = (t, s) / (t, t)
 //   x += alpha y + omega z;  r = s - omega t;  rho' = (r0, r)
 // A vanishing rho (r orthogonal to the shadow residual) restarts with r0 = r.
-#include "pressure/Krylov.hpp"
+#include "linearSolvers/Krylov.hpp"
 #include <cmath>
 
 namespace shizuku {

@@ -8,8 +8,8 @@
 // lose a neighbour change it, so in a flowing case it is redone most steps).
 // SparseLU (Eigen, COLAMD ordering) works on a column-major copy.
 #include "core/Log.hpp"
-#include "pressure/Krylov.hpp"
-#include "pressure/SolverBackends.hpp"
+#include "linearSolvers/Krylov.hpp"
+#include "linearSolvers/SolverBackends.hpp"
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <klu.h>

@@ -1,7 +1,7 @@
 // Diagonal and block-Jacobi ILU(0) preconditioners (see Preconditioner.hpp).
 // ILU(0), row by row (IKJ form), restricted to the diagonal block of the row:
 //   for k in row i, k < i:  l_ik = a_ik / u_kk;  a_ij -= l_ik u_kj for j > k in both patterns.
-#include "pressure/Preconditioner.hpp"
+#include "linearSolvers/Preconditioner.hpp"
 #include "core/Log.hpp"
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Constructors of the LinearSolver backends (internal to libsph/pressure; the
+// Constructors of the LinearSolver backends (internal to libsph/linearSolvers; the
 // factory LinearSolver::create in LinearSolver.cpp reads the dictionary and calls these).
 //   iterative: OpenMP BiCGSTAB (Krylov.hpp) with a Preconditioner, warm start,
 //              direct SparseLU fallback when it fails (IterativeSolver.cpp)
@@ -7,8 +7,8 @@
 //              transposed system (no copy); the symbolic analysis is kept while
 //              the sparsity pattern is unchanged; Eigen SparseLU (DirectSolvers.cpp)
 #pragma once
-#include "pressure/LinearSolver.hpp"
-#include "pressure/Preconditioner.hpp"
+#include "linearSolvers/LinearSolver.hpp"
+#include "linearSolvers/Preconditioner.hpp"
 
 namespace shizuku {
 

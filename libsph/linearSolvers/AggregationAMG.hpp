@@ -1,5 +1,5 @@
 // Smoothed-aggregation algebraic multigrid preconditioner for the PPE
-// (methods.md 4.2; issue 9 item 3), OpenMP-parallel in every per-cycle
+// (methods.md 4.2), OpenMP-parallel in every per-cycle
 // operation, no external library. One V-cycle per application:
 //   setup (every `reuse` steps, or when the numbering or size changes, or when
 //   the iteration count grew past 1.5x (+2) the count right after a setup):
@@ -20,7 +20,7 @@
 // Levels below 8192 rows run on one thread. Setup uses Eigen's sparse products
 // (one thread, allocates); a cycle allocates nothing. Keys: preconditioner AMG; amgReuse 10.
 #pragma once
-#include "pressure/Preconditioner.hpp"
+#include "linearSolvers/Preconditioner.hpp"
 #include <Eigen/Dense>
 #include <Eigen/SparseLU>
 

@@ -10,10 +10,10 @@
 //   dropTolerance 1e-4; fillFactor 10;                         (ILUT)
 //   reuseSymbolic yes                                          (KLU, UMFPACK)
 // The default was chosen by measurement: docs/performance.md.
-#include "pressure/LinearSolver.hpp"
-#include "pressure/AggregationAMG.hpp"
-#include "pressure/Krylov.hpp"
-#include "pressure/SolverBackends.hpp"
+#include "linearSolvers/LinearSolver.hpp"
+#include "linearSolvers/AggregationAMG.hpp"
+#include "linearSolvers/Krylov.hpp"
+#include "linearSolvers/SolverBackends.hpp"
 
 namespace shizuku {
 
