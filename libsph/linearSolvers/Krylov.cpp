@@ -59,6 +59,25 @@ double multiplyDot(const SparseMatrixR& A, const double* x, double* y, const dou
   }
   return d;
 }
+
+// y = A x; returns (a, y) in ay and (y, y) in yy (one pass over the matrix).
+void multiplyDots(const SparseMatrixR& A, const double* x, double* y, const double* a, double& ay, double& yy) {
+  const int n = int(A.rows());
+  const int* outer = A.outerIndexPtr();
+  const int* col = A.innerIndexPtr();
+  const double* val = A.valuePtr();
+  double d = 0, e = 0;
+#pragma omp parallel for schedule(static) reduction(+ : d, e)
+  for (int i = 0; i < n; ++i) {
+    double sum = 0;
+    for (int q = outer[i]; q < outer[i + 1]; ++q) sum += val[q] * x[col[q]];
+    y[i] = sum;
+    d += sum * a[i];
+    e += sum * sum;
+  }
+  ay = d;
+  yy = e;
+}
 }  // namespace
 
 KrylovResult bicgstab(const SparseMatrixR& A, const double* b, double* x, const Preconditioner& M,
@@ -132,19 +151,7 @@ KrylovResult bicgstab(const SparseMatrixR& A, const double* b, double* x, const 
     }
     M.apply(s, z);
     double ts = 0, tt = 0;
-    {
-      const int* outer = A.outerIndexPtr();
-      const int* col = A.innerIndexPtr();
-      const double* val = A.valuePtr();
-#pragma omp parallel for schedule(static) reduction(+ : ts, tt)
-      for (int i = 0; i < n; ++i) {
-        double sum = 0;
-        for (int q = outer[i]; q < outer[i + 1]; ++q) sum += val[q] * z[col[q]];
-        t[i] = sum;
-        ts += sum * s[i];
-        tt += sum * sum;
-      }
-    }
+    multiplyDots(A, z, t, s, ts, tt);
     if (tt == 0 || !std::isfinite(tt)) { res.breakdown = true; return res; }
     omega = ts / tt;
     if (omega == 0) { res.breakdown = true; return res; }

@@ -67,6 +67,9 @@ struct NeighbourSearch<D>::Impl {
 
   void setupGrid(const std::vector<Vec<D>>& x, double radius, const PeriodicBox<D>& box);
   void sortByCell(const std::vector<Vec<D>>& x, const PeriodicBox<D>& box);
+  // After the scan (row lengths summed into out.offset): the rows, sorted by j.
+  template <class MinImage>
+  void copyRows(NeighbourList<D>& out, bool periodic, const MinImage& minImage);
   // The particles of the distinct neighbour cells of cell c (including c), as
   // ranges [b, e) of cell-order positions; consecutive cells are merged.
   int neighbourRanges(std::int64_t c, const PeriodicBox<D>& box, Index* ranges) const;
@@ -234,6 +237,49 @@ NeighbourSearch<D>::NeighbourSearch(double radius, PeriodicBox<D> box)
   }
 }
 
+// The rows of the scan, in particle order and sorted by j, with r_ij and |r_ij|.
+template <int D>
+template <class MinImage>
+void NeighbourSearch<D>::Impl::copyRows(NeighbourList<D>& out, bool periodic, const MinImage& minImage) {
+  Impl& m = *this;
+  const Index n = Index(out.offset.size()) - 1;
+  const Index* offset = out.offset.data();
+  const Index* sorted = m.sorted.data();
+  const Index* rank = m.rank.data();
+  const Vec<D>* xs = m.xs.data();
+  const std::size_t numPairs = std::size_t(offset[n]);
+  out.j.resize(numPairs);
+  out.rij.resize(numPairs);
+  out.r.resize(numPairs);
+  Index* oj = out.j.data();
+  Vec<D>* orij = out.rij.data();
+  double* orr = out.r.data();
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Index* src = m.found[m.rowThread[i]].data() + m.rowStart[i];
+    const Index len = offset[i + 1] - offset[i];
+    const Vec<D> xi = xs[rank[i]];
+    const Index p0 = offset[i];
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      bool isSorted = true;
+      Index last = -1;
+      for (Index t = 0; t < len; ++t) {
+        const Index l = src[t], j = sorted[l];
+        Vec<D> d = xi - xs[l];
+        if (periodic) minImage(d);
+        isSorted &= (j > last);
+        last = j;
+        oj[p0 + t] = j;
+        orij[p0 + t] = d;
+        orr[p0 + t] = std::sqrt(d.squaredNorm());
+      }
+      if (isSorted) break;
+      // rare (particles not in cell order, or a periodic wrap): sort and redo
+      std::sort(src, src + len, [&](Index u, Index v) { return sorted[u] < sorted[v]; });
+    }
+  }
+}
+
 template <int D>
 void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& out) {
   Impl& m = *impl_;
@@ -245,7 +291,6 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
   const std::int64_t numCells = m.numCells;
   const Index* cellStart = m.cellStart.data();
   const Index* sorted = m.sorted.data();
-  const Index* rank = m.rank.data();
   const Vec<D>* xs = m.xs.data();
   const Vec<D> period = m.period, half = m.halfPeriod;
   const std::array<bool, D> per = box_.periodic;
@@ -301,39 +346,7 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
     }
   }
   for (Index i = 0; i < n; ++i) offset[i + 1] += offset[i];
-  const std::size_t numPairs = std::size_t(offset[n]);
-  out.j.resize(numPairs);
-  out.rij.resize(numPairs);
-  out.r.resize(numPairs);
-  Index* oj = out.j.data();
-  Vec<D>* orij = out.rij.data();
-  double* orr = out.r.data();
-
-  // --- copy: rows in particle order, sorted by j
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    Index* src = m.found[m.rowThread[i]].data() + m.rowStart[i];
-    const Index len = offset[i + 1] - offset[i];
-    const Vec<D> xi = xs[rank[i]];
-    const Index p0 = offset[i];
-    for (int attempt = 0; attempt < 2; ++attempt) {
-      bool isSorted = true;
-      Index last = -1;
-      for (Index t = 0; t < len; ++t) {
-        const Index l = src[t], j = sorted[l];
-        Vec<D> d = xi - xs[l];
-        if (periodic) minImage(d);
-        isSorted &= (j > last);
-        last = j;
-        oj[p0 + t] = j;
-        orij[p0 + t] = d;
-        orr[p0 + t] = std::sqrt(d.squaredNorm());
-      }
-      if (isSorted) break;
-      // rare (particles not in cell order, or a periodic wrap): sort and redo
-      std::sort(src, src + len, [&](Index u, Index v) { return sorted[u] < sorted[v]; });
-    }
-  }
+  m.copyRows(out, periodic, minImage);
 }
 
 template <int D>

@@ -7,15 +7,28 @@ namespace shizuku {
 
 template <int D>
 void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<double>& source) {
+  const bool anyDirichlet = countRows(s);
+  // The particle order changed (cell reordering): a preconditioner kept from an
+  // earlier step no longer matches the rows.
+  const auto& P = s.particles;
+  if (ids_.size() != P.id.size() || !std::equal(ids_.begin(), ids_.end(), P.id.begin())) {
+    ids_ = P.id;
+    solver_->numberingChanged();
+  }
+  pinned_ = !anyDirichlet && numUnknowns_ > 0;
+  fillRows(s, source);
+}
+
+// Which particles are unknowns (fluid not on the free surface; walls with a fluid
+// neighbour), and where each row starts. Returns whether any fluid particle has p = 0.
+template <int D>
+bool PressureEquation<D>::countRows(const FlowState<D>& s) {
   const auto& P = s.particles;
   const auto& nl = s.neighbours;
   const long n = long(s.size());
-  const double V = s.V();
   unknown_.resize(n);
   rowStart_.resize(n + 1);
 
-  // 1. Which particles are unknowns (fluid not on the free surface; walls with a
-  //    fluid neighbour), and how many entries each row has.
   long anyDirichlet = 0, m = 0;
 #pragma omp parallel for schedule(static) reduction(+ : anyDirichlet, m)
   for (long i = 0; i < n; ++i) {
@@ -47,24 +60,22 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
   rowStart_[0] = 0;
   for (long i = 0; i < n; ++i) rowStart_[i + 1] += rowStart_[i];
   numUnknowns_ = m;
+  return anyDirichlet > 0;
+}
 
-  // The particle order changed (cell reordering): a preconditioner kept from an
-  // earlier step no longer matches the rows.
-  if (ids_.size() != P.id.size() || !std::equal(ids_.begin(), ids_.end(), P.id.begin())) {
-    ids_ = P.id;
-    solver_->numberingChanged();
-  }
-
-  // 2. Fill the compressed rows (columns ascending: each neighbour row is sorted by j).
-  //    Storage grows with 25 % headroom, so the changing number of pairs does not
-  //    reallocate every step.
+// The compressed rows (columns ascending: each neighbour row is sorted by j). Storage
+// grows with 25 % headroom, so the changing number of pairs does not reallocate every step.
+template <int D>
+void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<double>& source) {
+  const auto& nl = s.neighbours;
+  const long n = long(s.size());
+  const double V = s.V();
   A_.resize(n, n);
   A_.data().resize(rowStart_[n], 0.25);
   b_.resize(n);
   std::copy(rowStart_.begin(), rowStart_.end(), A_.outerIndexPtr());
   int* col = A_.innerIndexPtr();
   double* val = A_.valuePtr();
-  pinned_ = anyDirichlet == 0 && m > 0;
   long fallbacks = 0;
 #pragma omp parallel for schedule(static) reduction(+ : fallbacks)
   for (long i = 0; i < n; ++i) {

@@ -35,6 +35,8 @@ class PressureEquation {
   long standardRows() const { return standardRows_; }
 
  private:
+  bool countRows(const FlowState<D>& s);
+  void fillRows(const FlowState<D>& s, const std::vector<double>& source);
   std::unique_ptr<LinearSolver> solver_;
   std::vector<std::uint8_t> unknown_;  // per particle: 1 = solved for, 0 = p = 0
   std::vector<Index> rowStart_;        // per row: start in the CSR arrays
