@@ -1,5 +1,6 @@
 // Advective dynamic stabilization (methods.md 9); formula in ADS.hpp.
 #include "effects/ADS.hpp"
+#include "effects/EffectFactories.hpp"
 #include "effects/EffectParameters.hpp"
 #include <stdexcept>
 
@@ -47,7 +48,7 @@ void ADS<D>::correctPositions(FlowState<D>& s) {
   auto& x = s.particles.position;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) x[i] += delta_[i];
-  count_ = count;
+  this->actionCount_ = count;
 }
 
 template <int D>
@@ -69,7 +70,6 @@ std::unique_ptr<Effect<D>> makeADS(const Dictionary& d, const FlowState<D>&) {
 template class ADS<2>;
 template class ADS<3>;
 
-template std::unique_ptr<Effect<2>> makeADS<2>(const Dictionary&, const FlowState<2>&);
-template std::unique_ptr<Effect<3>> makeADS<3>(const Dictionary&, const FlowState<3>&);
+SHIZUKU_EFFECT_FACTORY(makeADS);
 
 }  // namespace shizuku

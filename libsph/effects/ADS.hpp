@@ -38,18 +38,12 @@ class ADS final : public PositionCorrectionEffect<D> {
   std::string describe() const override;
   void allocate(const FlowState<D>& s) override { delta_.assign(s.size(), Vec<D>::Zero()); }
   void correctPositions(FlowState<D>& s) override;
-  long lastActionCount() const override { return count_; }
 
  private:
   double distance_;  // d_ADS / d0
   double C_;
   Options o_;
   std::vector<Vec<D>> delta_;  // scratch, sized in allocate()
-  long count_ = 0;
 };
-
-// Builds the effect from its dictionary (keys in the header comment above).
-template <int D>
-std::unique_ptr<Effect<D>> makeADS(const Dictionary& dict, const FlowState<D>& s);
 
 }  // namespace shizuku

@@ -57,47 +57,43 @@ class Effect {
   virtual std::string name() const = 0;       // e.g. "gravity", "shifting/distribution"
   virtual EffectStage stage() const = 0;      // fixed by the typed base below
   virtual std::string describe() const = 0;   // parameters with units, for -dryRun and the log
-  virtual EffectNeeds needs() const { return {}; }
+  EffectNeeds needs() const { return needs_; }
   // Size the effect's own arrays (called before the time loop and after a particle-count change).
   virtual void allocate(const FlowState<D>&) {}
   virtual TimeStepLimit timeStepLimit(const FlowState<D>&) const { return {}; }
   // Number of particles the effect acted on in its last call (for the log; -1 = not counted).
-  virtual long lastActionCount() const { return -1; }
+  long lastActionCount() const { return actionCount_; }
+
+ protected:
+  EffectNeeds needs_;       // set by the constructor of an effect that needs more than the basics
+  long actionCount_ = -1;   // set by the stage hook of an effect that counts
+};
+
+// The typed bases: each fixes the stage and declares the one hook of that stage.
+template <int D, EffectStage S>
+class EffectAt : public Effect<D> {
+ public:
+  EffectStage stage() const final { return S; }
 };
 
 template <int D>
-class ForceEffect : public Effect<D> {
- public:
-  EffectStage stage() const final { return EffectStage::force; }
+struct ForceEffect : EffectAt<D, EffectStage::force> {
   virtual void addAcceleration(const FlowState<D>&, std::vector<Vec<D>>& acc) = 0;
 };
-
 template <int D>
-class PressureSourceEffect : public Effect<D> {
- public:
-  EffectStage stage() const final { return EffectStage::pressureSource; }
+struct PressureSourceEffect : EffectAt<D, EffectStage::pressureSource> {
   virtual void addPressureSource(const FlowState<D>&, std::vector<double>& rhsPerParticle) = 0;
 };
-
 template <int D>
-class AdvectionVelocityEffect : public Effect<D> {
- public:
-  EffectStage stage() const final { return EffectStage::advection; }
-  virtual void addAdvectionVelocity(const FlowState<D>&, const std::vector<Vec<D>>& uNew,
-                                    std::vector<Vec<D>>& du) = 0;
+struct AdvectionVelocityEffect : EffectAt<D, EffectStage::advection> {
+  virtual void addAdvectionVelocity(const FlowState<D>&, const std::vector<Vec<D>>& uNew, std::vector<Vec<D>>& du) = 0;
 };
-
 template <int D>
-class PositionCorrectionEffect : public Effect<D> {
- public:
-  EffectStage stage() const final { return EffectStage::postAdvection; }
+struct PositionCorrectionEffect : EffectAt<D, EffectStage::postAdvection> {
   virtual void correctPositions(FlowState<D>&) = 0;
 };
-
 template <int D>
-class ShiftTerm : public Effect<D> {
- public:
-  EffectStage stage() const final { return EffectStage::shift; }
+struct ShiftTerm : EffectAt<D, EffectStage::shift> {
   virtual void addShift(const FlowState<D>&, std::vector<Vec<D>>& dr) = 0;
 };
 

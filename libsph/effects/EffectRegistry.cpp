@@ -1,14 +1,7 @@
 // The effect registry: named creators for every optional effect, and the one list of
 // the built-in effects with the names system/sphSchemes and the constant/ files use.
 #include "effects/Effect.hpp"
-#include "effects/Gravity.hpp"
-#include "effects/Viscosity.hpp"
-#include "effects/PressureStabilization.hpp"
-#include "effects/ADS.hpp"
-#include "effects/ShiftingDistribution.hpp"
-#include "effects/SurfaceFitting.hpp"
-#include "effects/VolumeCorrection.hpp"
-#include "effects/XSPH.hpp"
+#include "effects/EffectFactories.hpp"
 
 namespace shizuku {
 

@@ -1,5 +1,8 @@
-// Gravity: a uniform acceleration on every fluid particle (eq. 4).
-#include "effects/Gravity.hpp"
+// Gravity, the body force of the predictor (eq. 4, docs/method.md 4.1), built only when
+// constant/g exists. Its time-step limit is the force condition dt <= 0.25 sqrt(h/|g|)
+// (docs/method.md 4.3).
+// Reads: constant/g `value` (acceleration vector).
+#include "effects/EffectFactories.hpp"
 
 namespace shizuku {
 namespace {
@@ -36,7 +39,6 @@ std::unique_ptr<Effect<D>> makeGravity(const Dictionary& gDict, const FlowState<
   return std::make_unique<Gravity<D>>(gDict.getVector<D>("value", dim::acceleration));
 }
 
-template std::unique_ptr<Effect<2>> makeGravity<2>(const Dictionary&, const FlowState<2>&);
-template std::unique_ptr<Effect<3>> makeGravity<3>(const Dictionary&, const FlowState<3>&);
+SHIZUKU_EFFECT_FACTORY(makeGravity);
 
 }  // namespace shizuku

@@ -1,5 +1,7 @@
-// Stabilized ISPH source term, eq. (9).
-#include "effects/PressureStabilization.hpp"
+// Stabilized ISPH (Asai et al. 2012), eq. (9), methods.md 4.1: the PPE source
+// gains alpha (rho - <rho>_i) / dt^2 on interior and vicinity rows.
+// Reads (system/sphSchemes): pressureStabilization { type densityInvariant; alpha 1e-3; }
+#include "effects/EffectFactories.hpp"
 
 namespace shizuku {
 namespace {
@@ -33,7 +35,6 @@ std::unique_ptr<Effect<D>> makePressureStabilization(const Dictionary& dict, con
   return std::make_unique<DensityInvariantSource<D>>(alpha);
 }
 
-template std::unique_ptr<Effect<2>> makePressureStabilization<2>(const Dictionary&, const FlowState<2>&);
-template std::unique_ptr<Effect<3>> makePressureStabilization<3>(const Dictionary&, const FlowState<3>&);
+SHIZUKU_EFFECT_FACTORY(makePressureStabilization);
 
 }  // namespace shizuku

@@ -1,6 +1,7 @@
 // OPS (eqs. 11-13) and DPS (eq. 14) distribution shifts; formulas, signs and
 // keys in ShiftingDistribution.hpp (methods.md 6, 7).
 #include "effects/ShiftingDistribution.hpp"
+#include "effects/EffectFactories.hpp"
 #include "effects/EffectParameters.hpp"
 #include <cmath>
 
@@ -91,7 +92,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     dr[i] += d;
     ++count;
   }
-  count_ = count;
+  this->actionCount_ = count;
 }
 
 template <int D>
@@ -115,7 +116,6 @@ std::unique_ptr<Effect<D>> makeShiftingDistribution(const Dictionary& d, const F
 template class ShiftingDistribution<2>;
 template class ShiftingDistribution<3>;
 
-template std::unique_ptr<Effect<2>> makeShiftingDistribution<2>(const Dictionary&, const FlowState<2>&);
-template std::unique_ptr<Effect<3>> makeShiftingDistribution<3>(const Dictionary&, const FlowState<3>&);
+SHIZUKU_EFFECT_FACTORY(makeShiftingDistribution);
 
 }  // namespace shizuku

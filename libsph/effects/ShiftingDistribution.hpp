@@ -53,25 +53,14 @@ struct DistributionParameters {
 template <int D>
 class ShiftingDistribution final : public ShiftTerm<D> {
  public:
-  explicit ShiftingDistribution(const DistributionParameters& p) : par_(p) {}
+  explicit ShiftingDistribution(const DistributionParameters& p) : par_(p) { this->needs_.normals = true; }
   std::string name() const override { return "shifting/distribution"; }
   std::string describe() const override;
-  EffectNeeds needs() const override {
-    EffectNeeds n;
-    n.normals = true;
-    return n;
-  }
   void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
-  long lastActionCount() const override { return count_; }
   const DistributionParameters& parameters() const { return par_; }
 
  private:
   DistributionParameters par_;
-  long count_ = 0;
 };
-
-// Builds the effect from its dictionary (keys in the header comment above).
-template <int D>
-std::unique_ptr<Effect<D>> makeShiftingDistribution(const Dictionary& dict, const FlowState<D>& s);
 
 }  // namespace shizuku

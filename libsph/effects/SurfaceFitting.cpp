@@ -1,5 +1,6 @@
 // Surface-fitting shift, eq. (19); formula, gates and sign in SurfaceFitting.hpp.
 #include "effects/SurfaceFitting.hpp"
+#include "effects/EffectFactories.hpp"
 #include "effects/EffectParameters.hpp"
 #include "surface/SurfaceFit.hpp"
 #include <cmath>
@@ -15,7 +16,7 @@ std::string SurfaceFitting<D>::describe() const {
 
 template <int D>
 void SurfaceFitting<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) {
-  count_ = 0;
+  this->actionCount_ = 0;
   if (s.fitDistance.size() != s.size()) return;  // no fit this step
   const auto& nrm = s.fitNormal;
   const double coeff = (par_.smoothingSign ? -1.0 : 1.0) * par_.C * s.h;
@@ -31,7 +32,7 @@ void SurfaceFitting<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr)
     dr[i] += (coeff * si) * nrm[i];
     ++count;
   }
-  count_ = count;
+  this->actionCount_ = count;
 }
 
 template <int D>
@@ -50,7 +51,6 @@ std::unique_ptr<Effect<D>> makeSurfaceFitting(const Dictionary& d, const FlowSta
 template class SurfaceFitting<2>;
 template class SurfaceFitting<3>;
 
-template std::unique_ptr<Effect<2>> makeSurfaceFitting<2>(const Dictionary&, const FlowState<2>&);
-template std::unique_ptr<Effect<3>> makeSurfaceFitting<3>(const Dictionary&, const FlowState<3>&);
+SHIZUKU_EFFECT_FACTORY(makeSurfaceFitting);
 
 }  // namespace shizuku

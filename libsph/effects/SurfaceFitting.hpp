@@ -28,26 +28,17 @@ struct SurfaceFittingParameters {
 template <int D>
 class SurfaceFitting final : public ShiftTerm<D> {
  public:
-  explicit SurfaceFitting(const SurfaceFittingParameters& p) : par_(p) {}
+  explicit SurfaceFitting(const SurfaceFittingParameters& p) : par_(p) {
+    this->needs_.normals = true;
+    this->needs_.surfaceFit = true;
+  }
   std::string name() const override { return "shifting/surfaceFitting"; }
   std::string describe() const override;
-  EffectNeeds needs() const override {
-    EffectNeeds n;
-    n.normals = true;
-    n.surfaceFit = true;
-    return n;
-  }
   void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
-  long lastActionCount() const override { return count_; }
   const SurfaceFittingParameters& parameters() const { return par_; }
 
  private:
   SurfaceFittingParameters par_;
-  long count_ = 0;
 };
-
-// Builds the effect from its dictionary (keys in the header comment above).
-template <int D>
-std::unique_ptr<Effect<D>> makeSurfaceFitting(const Dictionary& dict, const FlowState<D>& s);
 
 }  // namespace shizuku

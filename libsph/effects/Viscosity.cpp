@@ -1,5 +1,9 @@
-// The viscous force nu <lap u> of eq. (4) with the walls' velocity rule.
-#include "effects/Viscosity.hpp"
+// The viscous force of the predictor, nu <lap u> (eq. 4, docs/method.md 4.1), built only
+// when nu > 0. Wall neighbours show the no-slip mirror velocity 2 U_w - u_i, or u_i with
+// free slip (docs/method.md 11). Its time-step limit is dt <= 0.125 h^2 / nu
+// (docs/method.md 4.3).
+// Reads (constant/physicalProperties): nu (m^2/s), wallCondition noSlip|slip.
+#include "effects/EffectFactories.hpp"
 
 namespace shizuku {
 namespace {
@@ -33,7 +37,6 @@ std::unique_ptr<Effect<D>> makeViscosity(const Dictionary& props, const FlowStat
   return std::make_unique<Viscosity<D>>(nu, wall == "noSlip" ? WallVelocity::noSlip : WallVelocity::freeSlip);
 }
 
-template std::unique_ptr<Effect<2>> makeViscosity<2>(const Dictionary&, const FlowState<2>&);
-template std::unique_ptr<Effect<3>> makeViscosity<3>(const Dictionary&, const FlowState<3>&);
+SHIZUKU_EFFECT_FACTORY(makeViscosity);
 
 }  // namespace shizuku

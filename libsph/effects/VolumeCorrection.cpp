@@ -1,5 +1,6 @@
 // Volume-conservation shift, eq. (17); formula and sign in VolumeCorrection.hpp.
 #include "effects/VolumeCorrection.hpp"
+#include "effects/EffectFactories.hpp"
 #include "effects/EffectParameters.hpp"
 #include <cmath>
 
@@ -40,7 +41,7 @@ void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& d
     dr[i] += coeff * sum;
     ++count;
   }
-  count_ = count;
+  this->actionCount_ = count;
 }
 
 template <int D>
@@ -51,7 +52,6 @@ std::unique_ptr<Effect<D>> makeVolumeCorrection(const Dictionary& d, const FlowS
 template class VolumeCorrection<2>;
 template class VolumeCorrection<3>;
 
-template std::unique_ptr<Effect<2>> makeVolumeCorrection<2>(const Dictionary&, const FlowState<2>&);
-template std::unique_ptr<Effect<3>> makeVolumeCorrection<3>(const Dictionary&, const FlowState<3>&);
+SHIZUKU_EFFECT_FACTORY(makeVolumeCorrection);
 
 }  // namespace shizuku

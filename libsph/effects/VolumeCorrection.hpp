@@ -25,16 +25,10 @@ class VolumeCorrection final : public ShiftTerm<D> {
   std::string name() const override { return "shifting/volumeCorrection"; }
   std::string describe() const override;
   void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
-  long lastActionCount() const override { return count_; }
   double coefficient() const { return C_; }
 
  private:
   double C_;
-  long count_ = 0;
 };
-
-// Builds the effect from its dictionary (keys in the header comment above).
-template <int D>
-std::unique_ptr<Effect<D>> makeVolumeCorrection(const Dictionary& dict, const FlowState<D>& s);
 
 }  // namespace shizuku

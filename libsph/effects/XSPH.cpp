@@ -1,5 +1,6 @@
 // XSPH advection velocity (methods.md 10); formula in XSPH.hpp.
 #include "effects/XSPH.hpp"
+#include "effects/EffectFactories.hpp"
 #include "effects/EffectParameters.hpp"
 
 namespace shizuku {
@@ -23,7 +24,7 @@ void XSPH<D>::addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<
     du[i] += c * sum;
     ++count;
   }
-  count_ = count;
+  this->actionCount_ = count;
 }
 
 template <int D>
@@ -36,7 +37,6 @@ std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& d, const FlowState<D>&) {
 template class XSPH<2>;
 template class XSPH<3>;
 
-template std::unique_ptr<Effect<2>> makeXSPH<2>(const Dictionary&, const FlowState<2>&);
-template std::unique_ptr<Effect<3>> makeXSPH<3>(const Dictionary&, const FlowState<3>&);
+SHIZUKU_EFFECT_FACTORY(makeXSPH);
 
 }  // namespace shizuku

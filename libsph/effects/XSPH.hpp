@@ -17,15 +17,9 @@ class XSPH final : public AdvectionVelocityEffect<D> {
   std::string describe() const override { return cat("epsilon = ", epsilon_, ", on free-surface and vicinity particles"); }
   void addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<D>>& uNew,
                             std::vector<Vec<D>>& du) override;
-  long lastActionCount() const override { return count_; }
 
  private:
   double epsilon_;
-  long count_ = 0;
 };
-
-// Builds the effect from its dictionary (keys in the header comment above).
-template <int D>
-std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& dict, const FlowState<D>& s);
 
 }  // namespace shizuku
