@@ -1,7 +1,8 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Run every tutorial for a few steps with two builds of shizuku and compare the fields.
 
   bench/compareBuilds.py OLD_SHIZUKU NEW_SHIZUKU [-steps 50] [-threads 2] [-tutorials a,b] [-adaptive]
+  bench/compareBuilds.py OLD_SHIZUKU NEW_SHIZUKU -speed 5 [-steps 300] [-threads 1] [-tutorials damBreak]
 
 For a change that should not alter results (a restructuring, a faster kernel): each
 tutorial is copied twice into a temporary folder, its controlDict set to stop after
@@ -10,6 +11,11 @@ particle fields of the last time compared (largest absolute difference of positi
 velocity and pressure, and whether they are identical bit for bit). -adaptive also runs
 the tutorials with `adjustTimeStep yes` (the time-step limits of the effects).
 Exit 1 when a run fails. Prints one line per tutorial.
+
+-speed N: instead, time each tutorial N times with each build, alternating old and new in
+one sitting, and print the best (smallest) time-loop wall time per particle-step (the log's
+"us per particle-step") and the best process CPU time (user + system) per particle-step of
+each build, with the ratio new/old. Measure on an idle machine.
 """
 import argparse, os, re, shutil, subprocess, sys, tempfile
 import numpy as np
@@ -60,13 +66,47 @@ def last_time(case):
     return max(times, key=float)
 
 
+def execute(exe, case, threads):
+    """Runs the solver; returns its log and its CPU time (user + system, s)."""
+    with tempfile.TemporaryFile("w+") as log:
+        proc = subprocess.Popen([exe, "-case", case, "-threads", str(threads), "-noFunctionObjects"],
+                                stdout=log, stderr=subprocess.STDOUT)
+        _, status, usage = os.wait4(proc.pid, 0)
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        log.seek(0)
+        text = log.read()
+    if proc.returncode != 0:
+        sys.stderr.write(text[-3000:])
+        raise SystemExit("compareBuilds: %s failed on %s (exit %d)" % (exe, case, proc.returncode))
+    return text, usage.ru_utime + usage.ru_stime
+
+
 def run(exe, case, threads):
-    r = subprocess.run([exe, "-case", case, "-threads", str(threads), "-noFunctionObjects"],
-                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if r.returncode != 0:
-        sys.stderr.write(r.stdout[-3000:])
-        raise SystemExit("compareBuilds: %s failed on %s (exit %d)" % (exe, case, r.returncode))
+    execute(exe, case, threads)
     return read_fields(os.path.join(case, last_time(case), "particles.vtp")), last_time(case)
+
+
+def speed(a, names):
+    """Best of a.speed alternating runs per build: loop wall and process CPU per particle-step."""
+    with tempfile.TemporaryDirectory(prefix="compareSpeed") as tmp:
+        for name in names:
+            src = os.path.join(TOP, "tutorials", name)
+            best = {"old": [float("inf")] * 2, "new": [float("inf")] * 2}
+            for rep in range(a.speed):
+                for tag, exe in (("old", a.old), ("new", a.new)):
+                    case = os.path.join(tmp, "%s-%s-%d" % (name, tag, rep))
+                    prepare(src, case, a.steps, False)
+                    text, cpu = execute(os.path.abspath(exe), case, a.threads)
+                    us = float(re.search(r"\(([0-9.eE+-]+) us per particle-step\)", text).group(1))
+                    steps = int(re.search(r"End: (\d+) steps", text).group(1))
+                    fluid = int(re.search(r"Pipeline \(\dD, (\d+) fluid", text).group(1))
+                    cpu_us = cpu / (steps * fluid) * 1e6
+                    best[tag] = [min(best[tag][0], us), min(best[tag][1], cpu_us)]
+                    shutil.rmtree(case)
+            o, n = best["old"], best["new"]
+            print("%-32s %d steps, %d thread(s), best of %d: loop %.4g -> %.4g us/particle-step (x%.3f); "
+                  "process CPU %.4g -> %.4g us/particle-step (x%.3f)"
+                  % (name, a.steps, a.threads, a.speed, o[0], n[0], n[0] / o[0], o[1], n[1], n[1] / o[1]))
 
 
 def main():
@@ -77,8 +117,11 @@ def main():
     ap.add_argument("-threads", type=int, default=2)
     ap.add_argument("-tutorials", default="")
     ap.add_argument("-adaptive", action="store_true")
+    ap.add_argument("-speed", type=int, default=0)
     a = ap.parse_args()
     names = a.tutorials.split(",") if a.tutorials else sorted(os.listdir(os.path.join(TOP, "tutorials")))
+    if a.speed:
+        return speed(a, names)
     variants = [False, True] if a.adaptive else [False]
     with tempfile.TemporaryDirectory(prefix="compareBuilds") as tmp:
         for name in names:
