@@ -7,7 +7,7 @@ usage: runComparison.py NAME WORK --shizuku BIN --compare SHIZUKUCOMPARE --propo
 
 Copies the two tutorial cases (the proposed method and the variant the paper beats) into
 WORK/NAME/, overrides `spacing` (system/particlesDict) and `deltaT`, `endTime`
-(system/controlDict) with tests/cases/runCase.py's helpers, runs both, reads their
+(system/controlDict) with tests/support/shizukutest.py's helpers, runs both, reads their
 postProcessing with shizukuCompare's reader, and asserts the paper's ordering:
   1. the proposed method runs to endTime with exit status 0;
   2. it stays stable at least as long as the baseline (which may stop with exit 2): its
