@@ -229,12 +229,12 @@ def main():
                 if np.isnan(row[1:]).any():
                     wrong.append(f"t = {t:g}: nan at a time with no time directory")
                 continue
-            st = states[match[0]]
-            fluid = st["type"] == 0
-            dim = int(st.get("field:dimension", [2])[0])
-            xy = st["position"][fluid][:, :dim]
-            d0 = float(st["field:spacing"][0])
-            V = float(st["field:volume"][0])
+            state = states[match[0]]
+            fluid = state["type"] == 0
+            dim = int(state.get("field:dimension", [2])[0])
+            xy = state["position"][fluid][:, :dim]
+            d0 = float(state["field:spacing"][0])
+            V = float(state["field:volume"][0])
             S = kernel_sum(pts[:, :dim], xy, V, ratio * d0, kernel, dim)
             for k in range(len(pts)):
                 vals = row[1 + k * ncomp: 1 + (k + 1) * ncomp]
