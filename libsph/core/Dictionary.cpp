@@ -25,19 +25,6 @@ std::string describeValue(const DictValue& v) {
 
 std::string components(int D) { return D == 1 ? "(x)" : D == 2 ? "(x y)" : "(x y z)"; }
 
-std::string format(double x) {
-  std::ostringstream s;
-  s.precision(10);
-  s << x;
-  return s.str();
-}
-
-template <int D> std::string format(const Vec<D>& v) {
-  std::string s = "(";
-  for (int k = 0; k < D; ++k) s += (k ? " " : "") + format(v[k]);
-  return s + ")";
-}
-
 std::string withUnit(const std::string& value, Dimension d) {
   return d == dim::none ? value : value + " " + d.str();
 }
@@ -46,6 +33,13 @@ const std::vector<std::string> kSwitchTrue = {"on", "yes", "true"};
 const std::vector<std::string> kSwitchFalse = {"off", "no", "false"};
 
 }  // namespace
+
+std::string formatNumber(double x) {
+  std::ostringstream s;
+  s.precision(10);
+  s << x;
+  return s.str();
+}
 
 // --- basic access ------------------------------------------------------------
 
@@ -120,7 +114,7 @@ double Dictionary::getScalar(const std::string& key, Dimension d) const {
 
 double Dictionary::getScalarOr(const std::string& key, double def, Dimension d) const {
   if (const DictValue* v = find(key)) return numberOf(key, *v, d);
-  recordDefault(key, withUnit(format(def), d));
+  recordDefault(key, withUnit(formatNumber(def), d));
   return def;
 }
 
@@ -170,7 +164,7 @@ template <int D> Vec<D> Dictionary::getVector(const std::string& key, Dimension 
 template <int D>
 Vec<D> Dictionary::getVectorOr(const std::string& key, const Vec<D>& def, Dimension d) const {
   if (const DictValue* v = find(key)) return vectorOf<D>(key, *v, d);
-  recordDefault(key, withUnit(format<D>(def), d));
+  recordDefault(key, withUnit(formatNumber<D>(def), d));
   return def;
 }
 

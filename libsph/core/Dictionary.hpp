@@ -122,6 +122,14 @@ class Dictionary {
   template <int D> Vec<D> vectorOf(const std::string& key, const DictValue& v, Dimension d) const;
 };
 
+// A number or a vector as the messages and the log print it: 10 significant digits.
+std::string formatNumber(double x);
+template <int D> std::string formatNumber(const Vec<D>& v) {
+  std::string s = "(";
+  for (int k = 0; k < D; ++k) s += (k ? " " : "") + formatNumber(v[k]);
+  return s + ")";
+}
+
 // Closest candidate by edit distance (case-insensitive), or "" if none is close.
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
 

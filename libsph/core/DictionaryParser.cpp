@@ -311,19 +311,7 @@ class DictionaryParser {
     const Token& first = lex.peek();
     if (first.type == Token::lbrace) {
       const Token open = lex.next();
-      auto sub = std::make_shared<Dictionary>();
-      sub->name_ = path;
-      sub->where_ = keyTok.where;
-      scope_.push_back(sub.get());
-      enter(open.where, key);
-      parseBody(lex, *sub, &open, key);
-      --nesting_;
-      scope_.pop_back();
-      DictValue v;
-      v.kind = DictValue::Kind::dict;
-      v.dict = sub;
-      v.where = keyTok.where;
-      add(d, key, std::move(v), keyTok.where);
+      add(d, key, subDictionary(lex, open, path, keyTok.where, key), keyTok.where);
       return;
     }
     if (first.type == Token::semicolon)
@@ -352,6 +340,26 @@ class DictionaryParser {
       list.items = std::move(values);
       add(d, key, std::move(list), keyTok.where);
     }
+  }
+
+  // The sub-dictionary opened by `open` ('{', already read) up to its '}', as a
+  // value: named `name` (its path), located at `where` (the keyword, or the brace
+  // of a dictionary in a list).
+  DictValue subDictionary(Lexer& lex, const Token& open, const std::string& name, const SourceLocation& where,
+                          const std::string& key) {
+    auto sub = std::make_shared<Dictionary>();
+    sub->name_ = name;
+    sub->where_ = where;
+    scope_.push_back(sub.get());
+    enter(open.where, key);
+    parseBody(lex, *sub, &open, key);
+    --nesting_;
+    scope_.pop_back();
+    DictValue v;
+    v.kind = DictValue::Kind::dict;
+    v.dict = sub;
+    v.where = where;
+    return v;
   }
 
   // One value starting with token t: number [unit], word, string, (list) [unit], $macro [unit].
@@ -384,19 +392,7 @@ class DictionaryParser {
                  ", found " + describe(p));
           const std::string itemPath = path + "/" + std::to_string(v.items.size());
           if (p.type == Token::lbrace) {
-            auto sub = std::make_shared<Dictionary>();
-            sub->name_ = itemPath;
-            sub->where_ = p.where;
-            scope_.push_back(sub.get());
-            enter(p.where, key);
-            parseBody(lex, *sub, &p, key);
-            --nesting_;
-            scope_.pop_back();
-            DictValue dv;
-            dv.kind = DictValue::Kind::dict;
-            dv.dict = sub;
-            dv.where = p.where;
-            v.items.push_back(std::move(dv));
+            v.items.push_back(subDictionary(lex, p, itemPath, p.where, key));
           } else {
             v.items.push_back(value(lex, p, key, itemPath));
           }

@@ -39,31 +39,25 @@ class MessageCapture : public vtkCommand {
   std::string text;
 };
 
+// A one-component VTK array of class A (whose value type is T) holding a copy of v.
+template <class A, class T>
+vtkSmartPointer<vtkDataArray> makeScalarArray(const char* name, const std::vector<T>& v) {
+  auto a = vtkSmartPointer<A>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(1);
+  a->SetNumberOfTuples(vtkIdType(v.size()));
+  if (!v.empty()) std::memcpy(a->GetPointer(0), v.data(), v.size() * sizeof(T));
+  return a;
+}
+
 vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<double>& v) {
-  auto a = vtkSmartPointer<vtkDoubleArray>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(1);
-  a->SetNumberOfTuples(vtkIdType(v.size()));
-  if (!v.empty()) std::memcpy(a->GetPointer(0), v.data(), v.size() * sizeof(double));
-  return a;
+  return makeScalarArray<vtkDoubleArray>(name, v);
 }
-
 vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<std::uint8_t>& v) {
-  auto a = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(1);
-  a->SetNumberOfTuples(vtkIdType(v.size()));
-  if (!v.empty()) std::memcpy(a->GetPointer(0), v.data(), v.size());
-  return a;
+  return makeScalarArray<vtkUnsignedCharArray>(name, v);
 }
-
 vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<std::int64_t>& v) {
-  auto a = vtkSmartPointer<vtkTypeInt64Array>::New();
-  a->SetName(name);
-  a->SetNumberOfComponents(1);
-  a->SetNumberOfTuples(vtkIdType(v.size()));
-  if (!v.empty()) std::memcpy(a->GetPointer(0), v.data(), v.size() * sizeof(std::int64_t));
-  return a;
+  return makeScalarArray<vtkTypeInt64Array>(name, v);
 }
 
 template <int D>

@@ -93,6 +93,19 @@ template <int D> struct Monomials {
         ++m;
       }
   }
+  // Each monomial of `list` as a monomial of `lower` (one degree less) times one
+  // variable: the first variable it contains.
+  template <int N, int M>
+  static constexpr void parents(const int (&list)[N][3], const int (&lower)[M][3], int (&par)[N], int (&var)[N]) {
+    for (int m = 0; m < N; ++m) {
+      int a = 0;
+      while (list[m][a] == 0) ++a;
+      int e[3] = {list[m][0], list[m][1], list[m][2]};
+      e[a] -= 1;
+      par[m] = find(lower, e);
+      var[m] = a;
+    }
+  }
   constexpr Monomials() {
     for (int a = 0; a < D; ++a) e2[a][a] = 2;
     for (int k = 0; k < n2 - D; ++k) {
@@ -101,22 +114,8 @@ template <int D> struct Monomials {
     }
     enumerate(e3, 3);
     enumerate(e4, 4);
-    for (int m = 0; m < n3; ++m) {
-      int a = 0;
-      while (e3[m][a] == 0) ++a;
-      int e[3] = {e3[m][0], e3[m][1], e3[m][2]};
-      e[a] -= 1;
-      par3[m] = find(e2, e);
-      var3[m] = a;
-    }
-    for (int m = 0; m < n4; ++m) {
-      int a = 0;
-      while (e4[m][a] == 0) ++a;
-      int e[3] = {e4[m][0], e4[m][1], e4[m][2]};
-      e[a] -= 1;
-      par4[m] = find(e3, e);
-      var4[m] = a;
-    }
+    parents(e3, e2, par3, var3);
+    parents(e4, e3, par4, var4);
     for (int a = 0; a < D; ++a)
       for (int b = 0; b < D; ++b) {
         int e[3] = {0, 0, 0};

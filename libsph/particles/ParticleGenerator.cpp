@@ -22,17 +22,9 @@ constexpr double kSlack = 1e-9;  // round-off slack, in units of d0
 // lattice indices must stay exact in a double and fit a long.
 constexpr double kMaxSpacingsFromOrigin = 1e12;
 
-std::string fmt(double x) {
-  std::ostringstream s;
-  s.precision(10);
-  s << x;
-  return s.str();
-}
-template <int D> std::string fmt(const Vec<D>& v) {
-  std::string s = "(";
-  for (int k = 0; k < D; ++k) s += (k ? " " : "") + fmt(v[k]);
-  return s + ")";
-}
+// Numbers in messages as the dictionary prints them (formatNumber).
+std::string fmt(double x) { return formatNumber(x); }
+template <int D> std::string fmt(const Vec<D>& v) { return formatNumber<D>(v); }
 const char* axisName(int k) { return k == 0 ? "x" : k == 1 ? "y" : "z"; }
 
 // Names of the box faces in the order -x +x -y +y -z +z.
@@ -159,12 +151,20 @@ void readBox(const Dictionary& r, Region<D>& reg, double d0) {
                           " m): use a larger spacing, or raise maxParticles in particlesDict");
 }
 
+// An empty region named `name`, read from r: fluid or wall.
 template <int D>
-Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
-                    double limit) {
+Region<D> newRegion(const Dictionary& r, const std::string& name, bool fluid) {
   Region<D> reg;
   reg.name = name;
   reg.dict = &r;
+  reg.fluid = fluid;
+  return reg;
+}
+
+template <int D>
+Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
+                    double limit) {
+  Region<D> reg = newRegion<D>(r, name, true);
   for (const char* k : {"layers", "open"})
     if (hasKey<D>(r, k)) r.error(k, std::string("only wall regions take '") + k + "'");
   const std::string shape = r.getOption("shape", {"box", "circle", "sphere"});
@@ -203,10 +203,7 @@ Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, con
 template <int D>
 Region<D> readWall(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
                    double limit) {
-  Region<D> reg;
-  reg.name = name;
-  reg.dict = &r;
-  reg.fluid = false;
+  Region<D> reg = newRegion<D>(r, name, false);
   if (hasKey<D>(r, "velocity")) r.error("velocity", "wall regions are fixed; velocity is for fluid regions only");
   r.getOption("shape", {"box"});
   readBox<D>(r, reg, d0);

@@ -12,23 +12,20 @@ per quantity and check, one column per level: the worst |run - reference| over t
 window (for bounds-only entries, the run value closest to the bound), and the ratio
 to the allowed deviation of the current tolerance file in brackets.
 """
-import argparse
 import json
 import os
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import shizukutest as st  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("case")
-    ap.add_argument("work")
-    ap.add_argument("--shizuku", required=True)
-    ap.add_argument("--compare", required=True)
+    ap = st.case_arguments()
     ap.add_argument("--level", action="append", required=True, help="D0:DT")
-    ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--tabulate-only", action="store_true", help="only read the JSON of earlier runs")
     a = ap.parse_args()
     levels = [lv.split(":") for lv in a.level]

@@ -29,128 +29,18 @@ an earlier run at the committed size ("same as last time"); --update-reference r
 it from this run (after a deliberate change of the method; review the diff). The last line is `N passed, M failed`; exit status 0
 when every check passes.
 """
-import argparse
 import json
 import os
-import re
 import shutil
 import subprocess
 import sys
 import time
-import importlib.util
-from importlib.machinery import SourceFileLoader
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import shizukutest as st  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PYTHON = "/usr/bin/python3"
-
-
-def _top_level(text, path, key):
-    """The match of the top-level `key ...;` entry (first one outside braces and comments)."""
-    depth = 0
-    for m in re.finditer(r"//[^\n]*|/\*.*?\*/|[{}]|(?m:^[ \t]*" + re.escape(key) + r"[ \t]+([^;]*);)", text, re.S):
-        tok = m.group(0)
-        if tok == "{":
-            depth += 1
-        elif tok == "}":
-            depth -= 1
-        elif depth == 0 and not tok.startswith("//") and not tok.startswith("/*"):
-            return m
-    raise SystemExit(f"runCase: no top-level '{key}' in {path}")
-
-
-def get_key(path, key):
-    """The value text of the top-level `key ...;` entry of a dictionary file."""
-    with open(path) as f:
-        return _top_level(f.read(), path, key).group(1).strip()
-
-
-def set_key(path, key, value):
-    """Replace the top-level `key ...;` entry of a dictionary file (first one outside braces)."""
-    with open(path) as f:
-        text = f.read()
-    m = _top_level(text, path, key)
-    with open(path, "w") as f:
-        f.write(text[:m.start()] + f"{key} {value};" + text[m.end():])
-
-
-def _entry_match(text, path, entry, key):
-    """The match of `key VALUE` inside the one-level sub-dictionary `entry { ... }`."""
-    m = re.search(r"(\b" + re.escape(entry) + r"\s*\{[^}]*\b" + re.escape(key) + r"\s+)([^;\s]+)", text)
-    if not m:
-        raise SystemExit(f"runCase: no '{entry} {{ ... {key} ... }}' in {path}")
-    return m
-
-
-def get_entry_key(path, entry, key):
-    """The value text of `key` in the sub-dictionary `entry { ... }` (e.g. a function object's
-    writeInterval) of a dictionary file."""
-    with open(path) as f:
-        return _entry_match(f.read(), path, entry, key).group(2)
-
-
-def set_entry_key(path, entry, key, value):
-    """Replace the value of `key` in the sub-dictionary `entry { ... }` of a dictionary file."""
-    with open(path) as f:
-        text = f.read()
-    m = _entry_match(text, path, entry, key)
-    with open(path, "w") as f:
-        f.write(text[:m.start(2)] + str(value) + text[m.end(2):])
-
-
-def load_module(path, name):
-    """A Python file (with or without .py) imported as a module."""
-    loader = SourceFileLoader(name, path)
-    spec = importlib.util.spec_from_loader(name, loader)
-    mod = importlib.util.module_from_spec(spec)
-    loader.exec_module(mod)
-    return mod
-
-
-def load_compare(path):
-    """shizukuCompare (a script without .py) imported as a module, for its dictionary parser."""
-    return load_module(path, "shizukuCompare")
-
-
-def copy_case(src, dst):
-    shutil.rmtree(dst, ignore_errors=True)
-    os.makedirs(dst)
-    for name in ("system", "constant"):
-        shutil.copytree(os.path.join(src, name), os.path.join(dst, name))
-
-
-def remove_shifting(case):
-    """Switch off the particle shift, ADS and XSPH of a copied case (the bare projection method)."""
-    schemes = os.path.join(case, "system", "sphSchemes")
-    with open(schemes) as f:
-        s = f.read()
-    s = re.sub(r"(?s)\nshifting\s*\{.*?\n\}", "\n", s)
-    s = re.sub(r"\n\s*(ads|xsph)\s*\{[^}]*\}", "\n", s)
-    with open(schemes, "w") as f:
-        f.write(s)
-
-
-def run_solver(shizuku, case, threads):
-    """Run the solver on a case, its output in case/log.shizuku; returns the exit status."""
-    with open(os.path.join(case, "log.shizuku"), "w") as log:
-        return subprocess.run([shizuku, "-case", case, "-threads", str(threads)], stdout=log,
-                              stderr=subprocess.STDOUT).returncode
-
-
-def run_or_fail(shizuku, case, threads, what):
-    """run_solver; on a non-zero exit print a FAIL line naming `what` and the summary line,
-    and exit 1."""
-    rc = run_solver(shizuku, case, threads)
-    if rc != 0:
-        print(f"FAIL {what}: exit status {rc} (log: {case}/log.shizuku)")
-        print("0 passed, 1 failed")
-        sys.exit(1)
-
-
-def finish(ok, what):
-    """Print one check line and the summary line of a single-check script, and exit."""
-    print(("ok   " if ok else "FAIL ") + what)
-    print(f"{1 if ok else 0} passed, {0 if ok else 1} failed")
-    sys.exit(0 if ok else 1)
 
 
 def update_reference(cmp_mod, src, case, checks):
@@ -175,12 +65,7 @@ def update_reference(cmp_mod, src, case, checks):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("case")
-    ap.add_argument("work")
-    ap.add_argument("--shizuku", required=True)
-    ap.add_argument("--compare", required=True)
-    ap.add_argument("--threads", type=int, default=2)
+    ap = st.case_arguments()
     ap.add_argument("--spacing")
     ap.add_argument("--deltaT")
     ap.add_argument("--endTime")
@@ -194,7 +79,7 @@ def main():
 
     src = os.path.abspath(a.case)
     name = os.path.basename(src.rstrip("/"))
-    cmp_mod = load_compare(a.compare)
+    cmp_mod = st.load_compare(a.compare)
     checks = cmp_mod.read_dictionary(os.path.join(src, "checks"))
     expect_exit = int(checks.pop("exitCode", 0))
     variants = checks.pop("variants", {})
@@ -210,15 +95,15 @@ def main():
     case = os.path.abspath(os.path.join(a.work, name + name_suffix))
 
     if not a.skip_run:
-        copy_case(src, case)
+        st.copy_case(src, case)
         if a.spacing:
-            set_key(os.path.join(case, "system/particlesDict"), "spacing", a.spacing)
+            st.set_key(os.path.join(case, "system/particlesDict"), "spacing", a.spacing)
         if a.deltaT:
-            set_key(os.path.join(case, "system/controlDict"), "deltaT", a.deltaT)
+            st.set_key(os.path.join(case, "system/controlDict"), "deltaT", a.deltaT)
         if a.endTime:
-            set_key(os.path.join(case, "system/controlDict"), "endTime", a.endTime)
+            st.set_key(os.path.join(case, "system/controlDict"), "endTime", a.endTime)
         t0 = time.time()
-        rc = run_solver(a.shizuku, case, a.threads)
+        rc = st.run_solver(a.shizuku, case, a.threads)
         wall = time.time() - t0
         with open(os.path.join(case, "exitCode"), "w") as f:
             f.write(f"{rc}\n")
@@ -226,16 +111,13 @@ def main():
     else:
         with open(os.path.join(case, "exitCode")) as f:
             rc = int(f.read())
-    passed, failed, xfailed = [], [], []
     if rc != expect_exit:
         with open(os.path.join(case, "log.shizuku")) as f:
             lines = f.readlines()
         errors = [ln for ln in lines if "rror" in ln or "arning" in ln][:10]
         print(f"FAIL {name}: shizuku exit status {rc}, expected {expect_exit}; errors and warnings of the log:\n"
               + "".join(errors))
-        failed.append("exit status")
-    else:
-        passed.append("exit status")
+    st.check(rc == expect_exit, "exit status", quiet=True)
     if os.path.isfile(os.path.join(src, "makeAnalytic.py")):
         subprocess.check_call([PYTHON, os.path.join(src, "makeAnalytic.py"), case])
     if a.update_reference:
@@ -262,26 +144,21 @@ def main():
             cmd += ["-json", os.path.join(case, f"check.{check}.json")]
         ok = subprocess.call(cmd) == 0
         if entry.get("knownFailure") in ("yes", "on", "true"):  # strict expected failure
-            if ok:
-                print(f"XPASS {name}/{check}: marked knownFailure but passes; remove the mark from {src}/checks")
-                failed.append(check)
-            else:
-                print(f"XFAIL {name}/{check} [knownFailure in {src}/checks; see the case README]")
-                xfailed.append(check)
+            st.check(ok, f"{name}/{check}", xpass=f"marked knownFailure but passes; remove the mark from {src}/checks",
+                     xfail=f"knownFailure in {src}/checks; see the case README")
             continue
-        (passed if ok else failed).append(check)
+        st.check(ok, check, quiet=True)
         if a.json and os.path.isfile(os.path.join(case, f"check.{check}.json")):
             with open(os.path.join(case, f"check.{check}.json")) as f:
                 all_results[check] = json.load(f)
     if a.json:
         with open(a.json, "w") as f:
             json.dump(all_results, f, indent=1)
-    if xfailed:
-        print(f"{name}: known failures (not counted): {' '.join(xfailed)}")
-    if failed:
-        print(f"{name}: failed checks: {' '.join(failed)}")
-    print(f"{len(passed)} passed, {len(failed)} failed")
-    return 1 if failed else 0
+    if st.XFAILED:
+        print(f"{name}: known failures (not counted): {' '.join(st.XFAILED)}")
+    if st.FAILED:
+        print(f"{name}: failed checks: {' '.join(st.FAILED)}")
+    return st.summary()
 
 
 if __name__ == "__main__":

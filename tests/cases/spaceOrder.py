@@ -23,49 +23,43 @@ are second order on their own (tests/unit/test_operators_convergence); the likel
 the no-slip wall treatment (dummy layers), not yet investigated. The test asserts order >= 0.9
 (the measured 1.21 with a margin for the two-level scatter): a scheme that stopped
 converging (order near 0), or one that converged more slowly than first order, fails."""
-import argparse
 import math
 import os
 import re
 import shutil
+import sys
 
-from runCase import (copy_case, finish, get_key, load_compare, load_module, remove_shifting, run_or_fail,
-                     set_entry_key, set_key)
-
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import shizukutest as st  # noqa: E402
 
 
 def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("case")
-    p.add_argument("work")
-    p.add_argument("--shizuku", required=True)
-    p.add_argument("--compare", required=True)
+    p = st.case_arguments()
     p.add_argument("--levels", default="10,20,40")
     p.add_argument("--shifting", choices=("on", "off"), default="off")
-    p.add_argument("--threads", type=int, default=2)
     p.add_argument("--min-order", type=float, default=0.9)
     a = p.parse_args()
-    cm = load_compare(a.compare)
+    cm = st.load_compare(a.compare)
     root = os.path.join(a.work, "spaceOrder")
     shutil.rmtree(root, ignore_errors=True)
-    exact = load_module(os.path.join(a.case, "makeAnalytic.py"), "makeAnalytic")  # u(y, t), ys, H
-    dt0 = float(get_key(os.path.join(a.case, "system", "controlDict"), "deltaT"))
-    d00 = float(get_key(os.path.join(a.case, "system", "particlesDict"), "spacing"))
+    exact = st.load_module(os.path.join(a.case, "makeAnalytic.py"), "makeAnalytic")  # u(y, t), ys, H
+    dt0 = float(st.get_key(os.path.join(a.case, "system", "controlDict"), "deltaT"))
+    d00 = float(st.get_key(os.path.join(a.case, "system", "particlesDict"), "spacing"))
     results = []
     for n in (int(v) for v in a.levels.split(",")):
         d0 = exact.H / n
         dt = dt0 * (d0 / d00) ** 2
         steps = int(round(2.0 / dt))
         case = os.path.join(root, f"H{n}")
-        copy_case(a.case, case)
-        set_key(os.path.join(case, "system", "particlesDict"), "spacing", repr(d0))
+        st.copy_case(a.case, case)
+        st.set_key(os.path.join(case, "system", "particlesDict"), "spacing", repr(d0))
         path = os.path.join(case, "system", "controlDict")
-        set_key(path, "deltaT", repr(dt))
+        st.set_key(path, "deltaT", repr(dt))
         # probes every 0.02 s whatever dt is
-        set_entry_key(path, "profile", "writeInterval", max(1, int(round(0.02 / dt))))
+        st.set_entry_key(path, "profile", "writeInterval", max(1, int(round(0.02 / dt))))
         if a.shifting == "off":
-            remove_shifting(case)
-        run_or_fail(a.shizuku, case, a.threads, f"H/d0 = {n}")
+            st.remove_shifting(case)
+        st.run_or_fail(a.shizuku, case, a.threads, f"H/d0 = {n}")
         cols = cm.Series(case).columns
         names = sorted(c for c in cols if c.startswith("profile/U/"))
         e = 0.0
@@ -88,8 +82,8 @@ def main():
     ys = [math.log(e) for _, e, _, _ in results]
     mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
     order = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
-    finish(order >= a.min_order,
-           f"order in d0 {order:.2f} (shifting {a.shifting}; accepted >= {a.min_order}), H/d0 = {a.levels}")
+    st.finish(order >= a.min_order,
+              f"order in d0 {order:.2f} (shifting {a.shifting}; accepted >= {a.min_order}), H/d0 = {a.levels}")
 
 
 if __name__ == "__main__":

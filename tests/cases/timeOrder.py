@@ -17,42 +17,37 @@ shifts and the run does not converge in dt (measured with the proposed shifting:
 differences 4.4e-6, 2.0e-6, 2.0e-6, 1.0e-6 m/s for dt = 4, 2, 1, 0.5 ms).
 Measured without them: e = 4.43e-6, 2.06e-6, 8.84e-7, 2.95e-7 m/s, ratios 2.15, 2.34,
 3.00 (first order predicts 2.14, 2.33, 3.00), p = 1.00."""
-import argparse
 import math
 import os
 import shutil
 import sys
 
-from runCase import copy_case, finish, get_entry_key, get_key, load_compare, remove_shifting, run_or_fail, set_entry_key, set_key
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import shizukutest as st  # noqa: E402
 
 
 def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("case")
-    p.add_argument("work")
-    p.add_argument("--shizuku", required=True)
-    p.add_argument("--compare", required=True)
+    p = st.case_arguments()
     p.add_argument("--levels", type=int, default=5)
     p.add_argument("--endTime", default="0.4")
-    p.add_argument("--threads", type=int, default=2)
     a = p.parse_args()
-    cm = load_compare(a.compare)
+    cm = st.load_compare(a.compare)
     root = os.path.join(a.work, "timeOrder")
     shutil.rmtree(root, ignore_errors=True)
     control = os.path.join(a.case, "system", "controlDict")
-    dt0 = float(get_key(control, "deltaT"))
-    interval = int(get_entry_key(control, "profile", "writeInterval"))
+    dt0 = float(st.get_key(control, "deltaT"))
+    interval = int(st.get_entry_key(control, "profile", "writeInterval"))
     results = []
     for k in range(a.levels):
         case = os.path.join(root, f"dt{k}")
-        copy_case(a.case, case)
+        st.copy_case(a.case, case)
         path = os.path.join(case, "system", "controlDict")
-        set_key(path, "deltaT", repr(dt0 / 2 ** k))
-        set_key(path, "endTime", a.endTime)
+        st.set_key(path, "deltaT", repr(dt0 / 2 ** k))
+        st.set_key(path, "endTime", a.endTime)
         # the profile probes every `interval` steps at dt0: sample at the same times
-        set_entry_key(path, "profile", "writeInterval", interval * 2 ** k)
-        remove_shifting(case)
-        run_or_fail(a.shizuku, case, a.threads, f"dt = {dt0 / 2 ** k:g}")
+        st.set_entry_key(path, "profile", "writeInterval", interval * 2 ** k)
+        st.remove_shifting(case)
+        st.run_or_fail(a.shizuku, case, a.threads, f"dt = {dt0 / 2 ** k:g}")
         cols = cm.Series(case).columns
         names = sorted(c for c in cols if c.startswith("profile/U/"))
         results.append((dt0 / 2 ** k, cols[names[0]][0], [cols[c][1] for c in names]))
@@ -60,9 +55,7 @@ def main():
     errors = []
     for dt, t, values in results[:-1]:
         if len(t) != len(tf) or abs(t - tf).max() > 1e-9:
-            print(f"FAIL dt = {dt:g}: probe times differ from the finest run's")
-            print("0 passed, 1 failed")
-            sys.exit(1)
+            st.finish(False, f"dt = {dt:g}: probe times differ from the finest run's")
         e = max(float(abs(v - f)[(v == v) & (f == f)].max()) for v, f in zip(values, finest))
         errors.append((dt, e))
     for (dt, e), nxt in zip(errors, errors[1:] + [None]):
@@ -80,8 +73,8 @@ def main():
         if best is None or res < best[1]:
             best = (pp, res)
     order = best[0]
-    finish(0.9 <= order <= 1.1, f"order in dt {order:.2f} (expected 1: first-order projection; "
-           f"accepted 0.9 to 1.1), {a.levels} time steps from {dt0:g} s to {dtf:g} s")
+    st.finish(0.9 <= order <= 1.1, f"order in dt {order:.2f} (expected 1: first-order projection; "
+              f"accepted 0.9 to 1.1), {a.levels} time steps from {dt0:g} s to {dtf:g} s")
 
 
 if __name__ == "__main__":

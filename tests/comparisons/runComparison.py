@@ -7,7 +7,7 @@ usage: runComparison.py NAME WORK --shizuku BIN --compare SHIZUKUCOMPARE --propo
 
 Copies the two tutorial cases (the proposed method and the variant the paper beats) into
 WORK/NAME/, overrides `spacing` (system/particlesDict) and `deltaT`, `endTime`
-(system/controlDict) with tests/cases/runCase.py's helpers, runs both, reads their
+(system/controlDict) with tests/support/shizukutest.py's helpers, runs both, reads their
 postProcessing with shizukuCompare's reader, and asserts the paper's ordering:
   1. the proposed method runs to endTime with exit status 0;
   2. it stays stable at least as long as the baseline (which may stop with exit 2): its
@@ -24,22 +24,12 @@ postProcessing with shizukuCompare's reader, and asserts the paper's ordering:
      "pressure disturbance" of the stabilized source term); the density averages are then
      printed, not asserted.
 Prints the numbers; the last line is `N passed, M failed`."""
-import argparse
 import os
 import re
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cases"))
-from runCase import copy_case, load_compare, run_solver, set_key  # noqa: E402
-
-failures = []
-passes = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    (passes if cond else failures).append(what)
-    return cond
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import shizukutest as st  # noqa: E402
 
 
 def pressure_noise(t, p, t0, t1):
@@ -64,30 +54,25 @@ def breakdown_time(log):
 
 
 def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("name")
-    p.add_argument("work")
-    p.add_argument("--shizuku", required=True)
-    p.add_argument("--compare", required=True)
+    p = st.case_arguments("name")
     p.add_argument("--proposed", required=True)
     p.add_argument("--baseline", required=True)
     p.add_argument("--spacing", required=True)
     p.add_argument("--deltaT", required=True)
     p.add_argument("--endTime", required=True)
     p.add_argument("--window", nargs=2, type=float, required=True)
-    p.add_argument("--threads", type=int, default=2)
     p.add_argument("--measure", choices=("density", "pressureNoise"), default="density")
     p.add_argument("--baselineBreaksDown", action="store_true")
     a = p.parse_args()
-    cm = load_compare(a.compare)
+    cm = st.load_compare(a.compare)
     rc, series, end, probe = {}, {}, {}, {}
     for k, src in (("proposed", a.proposed), ("baseline", a.baseline)):
         case = os.path.join(a.work, a.name, k)
-        copy_case(src, case)
-        set_key(os.path.join(case, "system", "particlesDict"), "spacing", a.spacing)
+        st.copy_case(src, case)
+        st.set_key(os.path.join(case, "system", "particlesDict"), "spacing", a.spacing)
         for key in ("deltaT", "endTime"):
-            set_key(os.path.join(case, "system", "controlDict"), key, getattr(a, key))
-        rc[k] = run_solver(a.shizuku, case, a.threads)
+            st.set_key(os.path.join(case, "system", "controlDict"), key, getattr(a, key))
+        rc[k] = st.run_solver(a.shizuku, case, a.threads)
         cols = cm.Series(case).columns
         if a.measure == "pressureNoise":
             probe[k] = cols["centre/p/point0"]
@@ -95,22 +80,22 @@ def main():
         series[k] = (t, mean, cols["densityError/densityError.dat/mode"][1])
         end[k] = float(t[-1]) if len(t) else 0.0
         print(f"     {k}: exit status {rc[k]}, last densityError sample at t = {end[k]:.4g} s ({case})")
-    check(rc["proposed"] == 0 and end["proposed"] >= float(a.endTime) * (1 - 1e-6),
-          f"{a.name}: the proposed method runs to endTime {a.endTime} (exit status {rc['proposed']})")
-    check(end["proposed"] >= end["baseline"],
-          f"{a.name}: the proposed method stays stable at least as long as the baseline "
-          f"(to t = {end['proposed']:.4g} s against {end['baseline']:.4g} s)")
+    st.check(rc["proposed"] == 0 and end["proposed"] >= float(a.endTime) * (1 - 1e-6),
+             f"{a.name}: the proposed method runs to endTime {a.endTime} (exit status {rc['proposed']})")
+    st.check(end["proposed"] >= end["baseline"],
+             f"{a.name}: the proposed method stays stable at least as long as the baseline "
+             f"(to t = {end['proposed']:.4g} s against {end['baseline']:.4g} s)")
     if a.baselineBreaksDown:
         when = breakdown_time(os.path.join(a.work, a.name, "baseline", "log.shizuku"))
-        check(rc["baseline"] == 2 and when is not None and when < float(a.endTime),
-              f"{a.name}: the baseline breaks down before endTime {a.endTime} (exit status "
-              f"{rc['baseline']}, last good state at t = {when})")
+        st.check(rc["baseline"] == 2 and when is not None and when < float(a.endTime),
+                 f"{a.name}: the baseline breaks down before endTime {a.endTime} (exit status "
+                 f"{rc['baseline']}, last good state at t = {when})")
     t0, t1 = a.window[0], min(a.window[1], end["baseline"])
     # A baseline expected to break down is compared over the part it ran, at least 1 s (ten
     # widths of the 0.1 s moving average); otherwise over at least half the window.
     need = 1.0 if a.baselineBreaksDown else 0.5 * (a.window[1] - a.window[0])
-    if check(t1 - t0 >= need,
-             f"{a.name}: the baseline ran at least {need:g} s of the window ({t0}, {a.window[1]}) s (to t = {end['baseline']:.4g})"):
+    if st.check(t1 - t0 >= need,
+                f"{a.name}: the baseline ran at least {need:g} s of the window ({t0}, {a.window[1]}) s (to t = {end['baseline']:.4g})"):
         avg = {}
         for k, (t, mean, mode) in series.items():
             w = (t >= t0) & (t <= t1)
@@ -118,22 +103,21 @@ def main():
             print(f"     {k}: over {t0} <= t <= {t1:.4g} s ({avg[k][2]} samples) interior density error: "
                   f"mean {avg[k][0]:.3f} %, mode {avg[k][1]:.3f} %")
         if a.measure == "density":
-            check(abs(avg["proposed"][1]) < abs(avg["baseline"][1]),
-                  f"{a.name}: time-averaged interior density-error mode lower for the proposed method "
-                  f"(|{avg['proposed'][1]:.3f}| % < |{avg['baseline'][1]:.3f}| %)")
-            check(abs(avg["proposed"][0]) < abs(avg["baseline"][0]),
-                  f"{a.name}: time-averaged interior mean density error lower for the proposed method "
-                  f"(|{avg['proposed'][0]:.3f}| % < |{avg['baseline'][0]:.3f}| %)")
+            st.check(abs(avg["proposed"][1]) < abs(avg["baseline"][1]),
+                     f"{a.name}: time-averaged interior density-error mode lower for the proposed method "
+                     f"(|{avg['proposed'][1]:.3f}| % < |{avg['baseline'][1]:.3f}| %)")
+            st.check(abs(avg["proposed"][0]) < abs(avg["baseline"][0]),
+                     f"{a.name}: time-averaged interior mean density error lower for the proposed method "
+                     f"(|{avg['proposed'][0]:.3f}| % < |{avg['baseline'][0]:.3f}| %)")
         else:
             noise = {k: pressure_noise(*probe[k], t0, t1) for k in probe}
             for k, v in noise.items():
                 print(f"     {k}: centre pressure, rms about its 0.1 s moving average over {t0} <= t <= {t1:.4g} s: "
                       f"{v:.3g} Pa")
-            check(noise["proposed"] < noise["baseline"],
-                  f"{a.name}: smoother centre pressure for the proposed method "
-                  f"({noise['proposed']:.3g} Pa < {noise['baseline']:.3g} Pa)")
-    print(f"{len(passes)} passed, {len(failures)} failed")
-    sys.exit(1 if failures else 0)
+            st.check(noise["proposed"] < noise["baseline"],
+                     f"{a.name}: smoother centre pressure for the proposed method "
+                     f"({noise['proposed']:.3g} Pa < {noise['baseline']:.3g} Pa)")
+    sys.exit(st.summary())
 
 
 if __name__ == "__main__":

@@ -7,10 +7,14 @@ import re
 import shutil
 import signal
 import subprocess
+import sys
 import tempfile
 import time
 
 import vtp
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import shizukutest as st  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CRASH = re.compile(r"terminate called|AddressSanitizer|LeakSanitizer|runtime error:|Segmentation fault|"
@@ -45,13 +49,10 @@ class Scratch:
 
 
 def set_entries(path, **entries):
-    """Replace `keyword value;` lines of a dictionary file (appending new ones)."""
+    """Replace top-level `keyword value;` entries of a dictionary file (appending new ones)."""
     text = open(path).read()
     for key, value in entries.items():
-        line = f"{key} {value};"
-        text, n = re.subn(rf"(?m)^{key}\s.*$", line, text)
-        if n == 0:
-            text += line + "\n"
+        text = st.with_key(text, key, value, append=True)
     tmp = path + ".edit"
     with open(tmp, "w") as f:
         f.write(text)

@@ -20,8 +20,8 @@ from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scriptChecks import check, finish, write  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import shizukutest as st  # noqa: E402
 
 PLOT, WORK = sys.argv[1:3]
 CASE = os.path.join(WORK, "plotCase")
@@ -61,7 +61,7 @@ def write_vtp(path, t, d0=0.01):
     w.SetFileName(path)
     w.SetInputData(poly)
     w.SetDataModeToBinary()
-    check(w.Write() == 1, f"wrote {path}")
+    st.check(w.Write() == 1, f"wrote {path}")
 
 
 def make_case():
@@ -69,38 +69,34 @@ def make_case():
     for t, name in ((0.0, "0"), (0.1, "0.1")):
         write_vtp(os.path.join(CASE, name, "particles.vtp"), t)
     head = "# probes of p\n# columns: time point0 point1\n# units:   s    Pa     Pa\n"
-    write(f"{CASE}/postProcessing/centre/0/p", head + "".join(
+    st.write(f"{CASE}/postProcessing/centre/0/p", head + "".join(
         f"{0.01 * k:g} {100 + k} {50 - k}\n" for k in range(10)))
     # a restart at 0.05: replaces the rows from 0.05 on
-    write(f"{CASE}/postProcessing/centre/0.05/p", head + "".join(
+    st.write(f"{CASE}/postProcessing/centre/0.05/p", head + "".join(
         f"{0.05 + 0.01 * k:g} {200 + k} nan\n" for k in range(8)))
-    write(f"{CASE}/postProcessing/cons/0/conservation.dat",
-          "# columns: time volume kineticEnergy momentum\n# units:   s    m^2    J/m           kg/s\n" + "".join(
-              f"{0.01 * k:g} 0.01 {1 - 0.01 * k:g} ({0.1 * k:g} {-0.2 * k:g})\n" for k in range(12)))
+    st.write(f"{CASE}/postProcessing/cons/0/conservation.dat",
+             "# columns: time volume kineticEnergy momentum\n# units:   s    m^2    J/m           kg/s\n" + "".join(
+                 f"{0.01 * k:g} 0.01 {1 - 0.01 * k:g} ({0.1 * k:g} {-0.2 * k:g})\n" for k in range(12)))
     rows = "".join(f"{-9.75 + 0.5 * k:g} {max(0, 20 - abs(k - 22) * 3)} {max(0, 30 - abs(k - 21) * 2)}\n"
                    for k in range(40))
-    write(f"{CASE}/postProcessing/dErr/0/densityError.dat",
-          "# columns: time mean rms max mode meanAll rmsAll maxAll modeAll\n# units: s % % % % % % % %\n"
-          "0 0 0 0 0.25 0 0 0 0.25\n0.1 1 1.2 3 1.25 2 3 9 0.75\n")
-    write(f"{CASE}/postProcessing/dErr/0/0.1/histogram.dat",
-          "# columns: binCentre countInterior countAll\n# units:   %         -             -\n" + rows)
+    st.write(f"{CASE}/postProcessing/dErr/0/densityError.dat",
+             "# columns: time mean rms max mode meanAll rmsAll maxAll modeAll\n# units: s % % % % % % % %\n"
+             "0 0 0 0 0.25 0 0 0 0.25\n0.1 1 1.2 3 1.25 2 3 9 0.75\n")
+    st.write(f"{CASE}/postProcessing/dErr/0/0.1/histogram.dat",
+             "# columns: binCentre countInterior countAll\n# units:   %         -             -\n" + rows)
     # what a run that broke down leaves next to the tables: a binary particle file
     os.makedirs(f"{CASE}/postProcessing/healthChecks/0.1", exist_ok=True)
     with open(f"{CASE}/postProcessing/healthChecks/0.1/offending.vtp", "wb") as f:
         f.write(b"<VTKFile>\x96\xff\x00 appended binary data")
-    write(f"{WORK}/reference.csv", "# reference data\ntime,point0,p/point1\n0,90,45\n0.05,150,40\n0.09,180,41\n")
+    st.write(f"{WORK}/reference.csv", "# reference data\ntime,point0,p/point1\n0,90,45\n0.05,150,40\n0.09,180,41\n")
 
 
 def png_ok(path, min_colours):
-    if not os.path.isfile(path):
-        return False, "missing"
-    with open(path, "rb") as f:
-        if f.read(8) != b"\x89PNG\r\n\x1a\n":
-            return False, "not a PNG"
-    img = mpimg.imread(path)
-    colours = len(np.unique(img.reshape(-1, img.shape[-1]), axis=0))
-    return colours >= min_colours and img.shape[0] > 200 and img.shape[1] > 200, \
-        f"{img.shape[1]}x{img.shape[0]}, {colours} colours"
+    pic = st.png_picture(path)
+    if pic is None:
+        return False, "missing or not a PNG"
+    width, height, colours = pic
+    return colours >= min_colours and height > 200 and width > 200, f"{width}x{height}, {colours} colours"
 
 
 def wall_strip(path):
@@ -125,27 +121,27 @@ def main():
     make_case()
     r = run(["-case", CASE, "-field", "p", "-reference", os.path.join(WORK, "reference.csv")])
     print(r.stdout)
-    check(r.returncode == 0, "shizukuPlot -field p exits 0 (a health check's binary offending.vtp is skipped)")
+    st.check(r.returncode == 0, "shizukuPlot -field p exits 0 (a health check's binary offending.vtp is skipped)")
     plots = os.path.join(CASE, "plots")
     # particle pictures: a linear pressure through the jet map gives many colours
     for name in ("p_0.png", "p_0.1.png"):
         ok, what = png_ok(os.path.join(plots, name), 50)
-        check(ok, f"{name}: {what}")
+        st.check(ok, f"{name}: {what}")
     # particles are squares of side d0: the 12 walls (one row, spacing d0) tile a
     # 12 x 1 strip without gaps (ratio within pixel rounding: the strip is ~70 px high)
     ratio, fill = wall_strip(os.path.join(plots, "p_0.png"))
-    check(abs(ratio - 12) < 0.6 and fill > 0.97, f"wall row drawn as a 12:1 strip of squares: {ratio:.2f}:1, "
-          f"filled {100 * fill:.1f} %")
+    st.check(abs(ratio - 12) < 0.6 and fill > 0.97, f"wall row drawn as a 12:1 strip of squares: {ratio:.2f}:1, "
+             f"filled {100 * fill:.1f} %")
     for name in ("centre_p.png", "cons_conservation.png", "dErr_densityError.png", "dErr_histogram_0.1.png"):
         ok, what = png_ok(os.path.join(plots, name), 10)
-        check(ok, f"{name}: {what}")
-    check("Warning" not in r.stdout, "the reference columns matched")
+        st.check(ok, f"{name}: {what}")
+    st.check("Warning" not in r.stdout, "the reference columns matched")
     r = run(["-case", CASE, "-field", "Ux", "-time", "latestTime", "-what", "particles"])
-    check(r.returncode == 0 and os.path.isfile(os.path.join(plots, "Ux_0.1.png"))
-          and not os.path.exists(os.path.join(plots, "Ux_0.png")), "-field Ux -time latestTime: one picture")
+    st.check(r.returncode == 0 and os.path.isfile(os.path.join(plots, "Ux_0.1.png"))
+             and not os.path.exists(os.path.join(plots, "Ux_0.png")), "-field Ux -time latestTime: one picture")
     r = run(["-case", CASE, "-field", "densityError", "-time", "0", "-what", "particles", "-range", "-1", "1"])
     ok, what = png_ok(os.path.join(plots, "densityError_0.png"), 20)
-    check(r.returncode == 0 and ok, f"-field densityError -range: {what}")
+    st.check(r.returncode == 0 and ok, f"-field densityError -range: {what}")
     # -against: a second case drawn beside at the same time (walls twice: twice the grey pixels)
     other = os.path.join(WORK, "otherCase")
     shutil.rmtree(other, ignore_errors=True)
@@ -153,14 +149,14 @@ def main():
     r = run(["-case", CASE, "-against", other, "-time", "0.1", "-what", "particles"])
     pair = os.path.join(plots, "p_0.1_vs_otherCase.png")
     ok, what = png_ok(pair, 50)
-    check(r.returncode == 0 and ok, f"-against: {what}")
+    st.check(r.returncode == 0 and ok, f"-against: {what}")
     if ok:
         grey = lambda path: int(np.all(np.abs(mpimg.imread(path)[:, :, :3] - 0.6) < 0.01, axis=2).sum())
         single, double = grey(os.path.join(plots, "p_0.1.png")), grey(pair)
-        check(1.5 < double / max(single, 1) < 2.6, f"-against draws both cases' walls: {double} grey pixels, "
-              f"one case {single}")
+        st.check(1.5 < double / max(single, 1) < 2.6, f"-against draws both cases' walls: {double} grey pixels, "
+                 f"one case {single}")
     r = run(["-case", CASE, "-against", other, "-time", "0", "-what", "particles"])
-    check(r.returncode == 0 and "no time 0" in r.stdout, "-against a case without that time: warned, exit 0")
+    st.check(r.returncode == 0 and "no time 0" in r.stdout, "-against a case without that time: warned, exit 0")
     for bad, why in ((["-case", CASE, "-field", "nothing", "-what", "particles"], "unknown field"),
                      (["-case", CASE, "-against", os.path.join(WORK, "none"), "-what", "particles"],
                       "missing -against case"),
@@ -168,8 +164,8 @@ def main():
                      (["-case", os.path.join(WORK, "none")], "missing case"),
                      (["-case", CASE, "-what", "pictures"], "unknown -what")):
         r = run(bad)
-        check(r.returncode == 1 and "error" in r.stdout, f"{why}: exit 1 with a message")
-    return finish()
+        st.check(r.returncode == 1 and "error" in r.stdout, f"{why}: exit 1 with a message")
+    return st.summary()
 
 
 if __name__ == "__main__":

@@ -20,8 +20,8 @@ import shutil
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from scriptChecks import check, finish, write  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import shizukutest as st  # noqa: E402
 
 SHIZUKU, POST, WORK = sys.argv[1:4]
 CASE = os.path.join(WORK, "damBreakMini")
@@ -43,15 +43,15 @@ functions
 
 def make_case():
     shutil.rmtree(CASE, ignore_errors=True)
-    write(f"{CASE}/system/controlDict", control(0.03))
-    write(f"{CASE}/system/particlesDict", """spacing 1 [cm];
+    st.write(f"{CASE}/system/controlDict", control(0.03))
+    st.write(f"{CASE}/system/particlesDict", """spacing 1 [cm];
 regions
 {
     column { type fluid; shape box; min (0 0) [cm]; max (20 12) [cm]; }
     tank   { type wall; shape box; min (0 0) [cm]; max (40 30) [cm]; layers 3; open (top); }
 }
 """)
-    write(f"{CASE}/system/sphSchemes", """kernel { type cubicSpline; smoothingLengthRatio 1.2; }
+    st.write(f"{CASE}/system/sphSchemes", """kernel { type cubicSpline; smoothingLengthRatio 1.2; }
 derivatives SPH2;
 shifting
 {
@@ -63,9 +63,9 @@ shifting
 ads { }
 xsph { epsilon 0.5; }
 """)
-    write(f"{CASE}/system/sphSolution", "pressure { solver BiCGSTAB; tolerance 1e-10; }\n")
-    write(f"{CASE}/constant/physicalProperties", "rho 1 [g/cm^3];\nnu 9.8e-3 [cm^2/s];\n")
-    write(f"{CASE}/constant/g", "value (0 -980) [cm/s^2];\n")
+    st.write(f"{CASE}/system/sphSolution", "pressure { solver BiCGSTAB; tolerance 1e-10; }\n")
+    st.write(f"{CASE}/constant/physicalProperties", "rho 1 [g/cm^3];\nnu 9.8e-3 [cm^2/s];\n")
+    st.write(f"{CASE}/constant/g", "value (0 -980) [cm/s^2];\n")
 
 
 def run(args, threads, log):
@@ -103,27 +103,27 @@ def compare(live_root, post_root, start, names, times):
                 if not os.path.exists(live_file):
                     others = [os.path.join(live_root, name, s, rel) for s in os.listdir(os.path.join(live_root, name))]
                     live_file = next((f for f in others if os.path.exists(f)), live_file)
-                check(os.path.exists(live_file) and filecmp.cmp(post_file, live_file, shallow=False),
-                      f"{name}/{start}/{rel}: histogram identical to the live one "
-                      f"({os.path.relpath(live_file, live_root)})")
+                st.check(os.path.exists(live_file) and filecmp.cmp(post_file, live_file, shallow=False),
+                         f"{name}/{start}/{rel}: histogram identical to the live one "
+                         f"({os.path.relpath(live_file, live_root)})")
                 continue
             live = {r.split()[0]: r for r in rows(live_file)}
             post = rows(post_file)
-            check([r.split()[0] for r in post] == times,
-                  f"{name}/{start}/{rel}: post-processed at the saved times {times}")
+            st.check([r.split()[0] for r in post] == times,
+                     f"{name}/{start}/{rel}: post-processed at the saved times {times}")
             bad = [r for r in post if live.get(r.split()[0]) != r]
             for r in bad[:3]:
                 print(f"     post: {r}\n     live: {live.get(r.split()[0])}")
-            check(not bad, f"{name}/{start}/{rel}: {len(post)} rows equal the live rows")
+            st.check(not bad, f"{name}/{start}/{rel}: {len(post)} rows equal the live rows")
 
 
 def main():
     make_case()
-    check(run([SHIZUKU, "-case", CASE], 2, "log.shizuku") == 0, "live run (2 threads) exits 0")
+    st.check(run([SHIZUKU, "-case", CASE], 2, "log.shizuku") == 0, "live run (2 threads) exits 0")
     pp = os.path.join(CASE, "postProcessing")
     times = sorted((d for d in os.listdir(CASE) if os.path.isfile(os.path.join(CASE, d, "particles.vtp"))),
                    key=float)
-    check(times == ["0", "0.007", "0.014", "0.021", "0.028", "0.03"], f"saved times {times}")
+    st.check(times == ["0", "0.007", "0.014", "0.021", "0.028", "0.03"], f"saved times {times}")
     live = os.path.join(WORK, "live1")
     shutil.rmtree(live, ignore_errors=True)
     shutil.copytree(pp, live)
@@ -131,42 +131,42 @@ def main():
 
     # refusals and no-ops, before anything is overwritten
     before = snapshot(pp)
-    check(run([POST, "-case", CASE, "-func", "cons"], 1, "log.refuse") == 1, "existing output refused (exit 1)")
-    check(run([POST, "-case", CASE, "-func", "nothing"], 1, "log.unknown") == 1, "unknown -func: exit 1")
-    check(run([POST, "-case", CASE, "-func", "cons", "-time", "0.5"], 1, "log.badtime") == 1,
-          "unknown -time: exit 1")
-    check(run([POST, "-case", CASE, "-func", "cpu", "-overwrite"], 1, "log.cpu") == 0, "timing: exit 0")
-    check(snapshot(pp) == before, "refused, failed and timing post-processing left postProcessing untouched")
+    st.check(run([POST, "-case", CASE, "-func", "cons"], 1, "log.refuse") == 1, "existing output refused (exit 1)")
+    st.check(run([POST, "-case", CASE, "-func", "nothing"], 1, "log.unknown") == 1, "unknown -func: exit 1")
+    st.check(run([POST, "-case", CASE, "-func", "cons", "-time", "0.5"], 1, "log.badtime") == 1,
+             "unknown -time: exit 1")
+    st.check(run([POST, "-case", CASE, "-func", "cpu", "-overwrite"], 1, "log.cpu") == 0, "timing: exit 0")
+    st.check(snapshot(pp) == before, "refused, failed and timing post-processing left postProcessing untouched")
 
     for name in names:
-        check(run([POST, "-case", CASE, "-func", name, "-overwrite"], 1, f"log.post.{name}") == 0,
-              f"shizukuPostProcess -func {name} (1 thread) exits 0")
+        st.check(run([POST, "-case", CASE, "-func", name, "-overwrite"], 1, f"log.post.{name}") == 0,
+                 f"shizukuPostProcess -func {name} (1 thread) exits 0")
     compare(live, pp, "0", names, times)
-    check(os.path.isfile(os.path.join(pp, "cpu", "0", "timing.dat")), "live timing.dat kept")
+    st.check(os.path.isfile(os.path.join(pp, "cpu", "0", "timing.dat")), "live timing.dat kept")
 
     # a type name with default settings
-    check(run([POST, "-case", CASE, "-func", "conservation", "-time", "0.014,0.028"], 1, "log.type") == 0,
-          "-func conservation (a type) exits 0")
-    check([r.split()[0] for r in rows(os.path.join(pp, "conservation", "0.014", "conservation.dat"))]
-          == ["0.014", "0.028"], "type with default settings: rows at the selected times")
+    st.check(run([POST, "-case", CASE, "-func", "conservation", "-time", "0.014,0.028"], 1, "log.type") == 0,
+             "-func conservation (a type) exits 0")
+    st.check([r.split()[0] for r in rows(os.path.join(pp, "conservation", "0.014", "conservation.dat"))]
+             == ["0.014", "0.028"], "type with default settings: rows at the selected times")
 
     # restart: endTime 0.04 from latestTime 0.03 -> postProcessing/<name>/0.03/, old files untouched
     first = snapshot(pp)
-    write(f"{CASE}/system/controlDict", control(0.04))
-    check(run([SHIZUKU, "-case", CASE], 2, "log.shizuku.restart") == 0, "restarted run exits 0")
+    st.write(f"{CASE}/system/controlDict", control(0.04))
+    st.check(run([SHIZUKU, "-case", CASE], 2, "log.shizuku.restart") == 0, "restarted run exits 0")
     after = snapshot(pp)
-    check(all(after.get(k) == v for k, v in first.items()), "restart left every earlier file unchanged")
+    st.check(all(after.get(k) == v for k, v in first.items()), "restart left every earlier file unchanged")
     for name in names + ["cpu"]:
-        check(os.path.isdir(os.path.join(pp, name, "0.03")), f"restart writes {name}/0.03/")
+        st.check(os.path.isdir(os.path.join(pp, name, "0.03")), f"restart writes {name}/0.03/")
     live2 = os.path.join(WORK, "live2")
     shutil.rmtree(live2, ignore_errors=True)
     shutil.copytree(pp, live2)
     for name in names:
-        check(run([POST, "-case", CASE, "-func", name, "-time", "0.03:", "-overwrite"], 1,
-                  f"log.post2.{name}") == 0, f"post-processing the restart, -func {name}")
+        st.check(run([POST, "-case", CASE, "-func", name, "-time", "0.03:", "-overwrite"], 1,
+                     f"log.post2.{name}") == 0, f"post-processing the restart, -func {name}")
     compare(live2, pp, "0.03", names, ["0.03", "0.035", "0.04"])
 
-    return finish()
+    return st.summary()
 
 
 if __name__ == "__main__":

@@ -47,18 +47,16 @@ says why each listed id fails.
 The last line is `N passed, M failed`; exit status 0 when all pass.
 """
 import argparse
-import importlib.util
 import math
 import os
 import re
 import sys
-from importlib.machinery import SourceFileLoader
 
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
-PASSED, FAILED, XFAILED = [], [], []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import shizukutest as st  # noqa: E402
+
 KNOWN = set()  # ids listed in the limits' knownFailures
 
 
@@ -67,53 +65,9 @@ def check(cond, what, ident=None):
     failure is reported (XFAIL) but not counted; its passing fails (XPASS), so that the
     list is emptied as soon as the method is fixed."""
     if ident in KNOWN:
-        if cond:
-            print(f"XPASS {what}: listed in knownFailures but passes; remove '{ident}' from knownFailures")
-            FAILED.append(what)
-        else:
-            print(f"XFAIL {what} [known failure '{ident}', see the case README]")
-            XFAILED.append(what)
-        return cond
-    print(("ok   " if cond else "FAIL ") + what)
-    (PASSED if cond else FAILED).append(what)
-    return cond
-
-
-def load_compare(path):
-    loader = SourceFileLoader("shizukuCompare", path)
-    spec = importlib.util.spec_from_loader("shizukuCompare", loader)
-    mod = importlib.util.module_from_spec(spec)
-    loader.exec_module(mod)
-    return mod
-
-
-def read_vtp(path):
-    r = vtk.vtkXMLPolyDataReader()
-    r.SetFileName(path)
-    r.Update()
-    poly = r.GetOutput()
-    out = {"position": vtk_to_numpy(poly.GetPoints().GetData()).copy()}
-    pd = poly.GetPointData()
-    for k in range(pd.GetNumberOfArrays()):
-        out[pd.GetArrayName(k)] = vtk_to_numpy(pd.GetArray(k)).copy()
-    fd = poly.GetFieldData()
-    for k in range(fd.GetNumberOfArrays()):
-        a = fd.GetArray(k)
-        if a is not None:
-            out["field:" + a.GetName()] = vtk_to_numpy(a).copy()
-    return out
-
-
-def time_dirs(case):
-    out = []
-    for name in os.listdir(case):
-        try:
-            t = float(name)
-        except ValueError:
-            continue
-        if os.path.isfile(os.path.join(case, name, "particles.vtp")):
-            out.append((t, name))
-    return sorted(out)
+        return st.check(cond, what, xpass=f"listed in knownFailures but passes; remove '{ident}' from knownFailures",
+                        xfail=f"known failure '{ident}', see the case README")
+    return st.check(cond, what)
 
 
 def vec(v):
@@ -127,7 +81,7 @@ def main():
     ap.add_argument("--compare", required=True)
     ap.add_argument("--variant", help="a size of the case (e.g. long): its own knownFailures, if the limits give them")
     a = ap.parse_args()
-    cm = load_compare(a.compare)
+    cm = st.load_compare(a.compare)
     lim = cm.read_dictionary(a.limits)
     known = lim.get("knownFailures", [])
     # variantKnownFailures { long (volume); }: a size whose known failures differ
@@ -176,7 +130,7 @@ def main():
     wall_tol = float(lim.get("wallTolerance", 0.0)) * d0
 
     # 2-4, 6 over the time directories
-    times = time_dirs(case)
+    times = st.time_dirs(case)
     check(len(times) >= 2, f"{name}: {len(times)} time directories")
     ids0, energy0, floor_pe, budget = None, None, None, None
     worst_wall = (0.0, None, None)
@@ -186,7 +140,7 @@ def main():
     spill = {}     # per wall region: of those, the ids later found outside a closed face
     e_rel = float(lim["energy"]["rel"])
     for t, tname in times:
-        p = read_vtp(os.path.join(case, tname, "particles.vtp"))
+        p = st.read_vtp(os.path.join(case, tname, "particles.vtp"))
         for k, v in p.items():
             if np.issubdtype(np.asarray(v).dtype, np.floating) and not np.all(np.isfinite(v)):
                 nonfinite.append(f"{tname}/{k}")
@@ -301,10 +255,9 @@ def main():
         check(rms[i] <= float(lim["densityErrorRms"]["max"]),
               f"{name}: density-error rms at most {lim['densityErrorRms']['max']:g} % (largest {rms[i]:.3g} % "
               f"at t = {t[i]:g})", "densityErrorRms")
-    if XFAILED:
-        print(f"{len(XFAILED)} known failures (knownFailures in {a.limits}): " + "; ".join(XFAILED))
-    print(f"{len(PASSED)} passed, {len(FAILED)} failed")
-    return 1 if FAILED else 0
+    if st.XFAILED:
+        print(f"{len(st.XFAILED)} known failures (knownFailures in {a.limits}): " + "; ".join(st.XFAILED))
+    return st.summary()
 
 
 if __name__ == "__main__":

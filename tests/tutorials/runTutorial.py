@@ -23,45 +23,21 @@ usage: runTutorial.py TUTORIAL_DIR WORK_DIR --repo REPO --build BUILD [--steps N
 The last line is `N passed, M failed`; exit status 0 when every check passes.
 """
 import argparse
-import importlib.util
 import math
 import os
 import re
 import shutil
 import subprocess
 import sys
-from importlib.machinery import SourceFileLoader
 
 import numpy as np
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
-FAILURES = []
-PASSED = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    (PASSED if cond else FAILURES).append(what)
-    return cond
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import shizukutest as st  # noqa: E402
 
 
 def strip_comments(text):
     return re.sub(r"//[^\n]*|/\*.*?\*/", " ", text, flags=re.S)
-
-
-def top_level(text, key):
-    """The value text of a top-level `key value;` entry (outside any braces), or None."""
-    depth = 0
-    for m in re.finditer(r"[{}]|(?m:^[ \t]*" + re.escape(key) + r"[ \t]+([^;{}]*);)", text):
-        tok = m.group(0)
-        if tok == "{":
-            depth += 1
-        elif tok == "}":
-            depth -= 1
-        elif depth == 0:
-            return m.group(1).strip(), m.start(), m.end()
-    return None
 
 
 SECONDS = {"s": 1.0, "ms": 1e-3}
@@ -78,15 +54,14 @@ def shorten(control, steps):
     """Rewrite the copied controlDict: `steps` steps of deltaT, a time directory each step."""
     with open(control) as f:
         raw = f.read()
-    text = strip_comments(raw)
-    dt = seconds(top_level(text, "deltaT")[0])
-    start = top_level(text, "startTime")
-    t0 = seconds(start[0]) if start else 0.0
+    dt = seconds(st.find_key(raw, "deltaT").group(1).strip())
+    start = st.find_key(raw, "startTime")
+    t0 = seconds(start.group(1).strip()) if start else 0.0
     end = t0 + steps * dt
     new = {"endTime": f"{end!r}", "writeControl": "timeStep", "writeInterval": "1", "adjustTimeStep": "no",
            "startFrom": "startTime", "progressInterval": "1"}
     for key, value in new.items():
-        raw = set_top_level(raw, key, value)
+        raw = st.with_key(raw, key, value, append=True)
     raw = sample_every_step(raw)
     with open(control, "w") as f:
         f.write(raw)
@@ -119,43 +94,6 @@ def sample_every_step(raw):
     return raw
 
 
-def set_top_level(raw, key, value):
-    """Replace (or append) a top-level entry, skipping comments and sub-dictionaries."""
-    depth = 0
-    pat = re.compile(r"//[^\n]*|/\*.*?\*/|[{}]|(?m:^[ \t]*" + re.escape(key) + r"[ \t]+[^;{}]*;)", re.S)
-    for m in pat.finditer(raw):
-        tok = m.group(0)
-        if tok.startswith("//") or tok.startswith("/*"):
-            continue
-        if tok == "{":
-            depth += 1
-        elif tok == "}":
-            depth -= 1
-        elif depth == 0:
-            return raw[:m.start()] + f"{key} {value};" + raw[m.end():]
-    return raw + f"\n{key} {value};\n"
-
-
-def read_vtp(path):
-    r = vtk.vtkXMLPolyDataReader()
-    r.SetFileName(path)
-    r.Update()
-    poly = r.GetOutput()
-    if poly is None or poly.GetNumberOfPoints() == 0:
-        return None
-    out = {"position": vtk_to_numpy(poly.GetPoints().GetData()).copy()}
-    pd = poly.GetPointData()
-    for k in range(pd.GetNumberOfArrays()):
-        a = pd.GetArray(k)
-        out[a.GetName()] = vtk_to_numpy(a).copy()
-    fd = poly.GetFieldData()
-    for k in range(fd.GetNumberOfArrays()):
-        a = fd.GetArray(k)
-        if a is not None:
-            out["field:" + a.GetName()] = vtk_to_numpy(a).copy()
-    return out
-
-
 def kernel_sum(points, fluid_xy, V, h, kernel, dim):
     """S(x) = sum_j V W(|x - x_j|, h) at each point (cubic spline or Wendland C2, support 2h)."""
     r = np.sqrt(((fluid_xy[None, :, :] - points[:, None, :]) ** 2).sum(axis=2))
@@ -168,18 +106,6 @@ def kernel_sum(points, fluid_xy, V, h, kernel, dim):
         t = np.clip(1 - 0.5 * q, 0, None)
         w = t ** 4 * (2 * q + 1)
     return V * sigma * w.sum(axis=1)
-
-
-def time_dirs(case):
-    out = []
-    for name in os.listdir(case):
-        try:
-            t = float(name)
-        except ValueError:
-            continue
-        if os.path.isfile(os.path.join(case, name, "particles.vtp")):
-            out.append((t, name))
-    return sorted(out)
 
 
 def probe_points(file_path):
@@ -214,10 +140,7 @@ def main():
     ap.add_argument("--steps", type=int, default=4)
     ap.add_argument("--threads", type=int, default=2)
     a = ap.parse_args()
-    loader = SourceFileLoader("shizukuCompare", os.path.join(a.build, "utilities", "shizukuCompare"))
-    spec = importlib.util.spec_from_loader("shizukuCompare", loader)
-    cmpmod = importlib.util.module_from_spec(spec)
-    loader.exec_module(cmpmod)
+    cmpmod = st.load_compare(os.path.join(a.build, "utilities", "shizukuCompare"))
 
     src = os.path.abspath(a.tutorial)
     name = os.path.basename(src.rstrip("/"))
@@ -233,39 +156,39 @@ def main():
     env = dict(os.environ, SHIZUKU_DIR=os.path.abspath(a.repo), SHIZUKU_BUILD=os.path.abspath(a.build),
                OMP_NUM_THREADS=str(a.threads))
     rc = subprocess.call(["sh", os.path.join(case, "Allrun")], env=env, cwd=case)
-    check(rc == 0, f"{name}: Allrun exit status {rc}")
+    st.check(rc == 0, f"{name}: Allrun exit status {rc}")
     log = os.path.join(case, "log.shizuku")
-    if check(os.path.isfile(log), f"{name}: log.shizuku written"):
+    if st.check(os.path.isfile(log), f"{name}: log.shizuku written"):
         with open(log) as f:
             text = f.read()
-        check("numerical failure" not in text, f"{name}: no numerical failure in the log")
+        st.check("numerical failure" not in text, f"{name}: no numerical failure in the log")
         if rc != 0:
             print(text[-3000:])
 
     # time directories and particles
-    times = time_dirs(case)
-    check(len(times) == a.steps + 1, f"{name}: {len(times)} time directories (expected {a.steps + 1})")
-    check(abs(times[-1][0] - end) <= 1e-9 * max(1, end) if times else False, f"{name}: the last time is endTime")
+    times = st.time_dirs(case)
+    st.check(len(times) == a.steps + 1, f"{name}: {len(times)} time directories (expected {a.steps + 1})")
+    st.check(abs(times[-1][0] - end) <= 1e-9 * max(1, end) if times else False, f"{name}: the last time is endTime")
     first = None
     states = {}
     for t, tname in times:
-        p = read_vtp(os.path.join(case, tname, "particles.vtp"))
-        if not check(p is not None, f"{name}: {tname}/particles.vtp read by VTK"):
+        p = st.read_vtp(os.path.join(case, tname, "particles.vtp"))
+        if not st.check(p is not None, f"{name}: {tname}/particles.vtp read by VTK"):
             continue
         finite = all(np.all(np.isfinite(p[k])) for k in ("position", "U", "p", "rhoN") if k in p)
-        check(finite and all(k in p for k in ("U", "p", "rhoN", "type", "id")),
-              f"{name}: {tname}: U, p, rhoN present and finite for {len(p['position'])} particles")
+        st.check(finite and all(k in p for k in ("U", "p", "rhoN", "type", "id")),
+                 f"{name}: {tname}: U, p, rhoN present and finite for {len(p['position'])} particles")
         ids = np.sort(p["id"])
         if first is None:
             first = ids
         else:
-            check(np.array_equal(ids, first), f"{name}: {tname}: the same particles as at the start")
+            st.check(np.array_equal(ids, first), f"{name}: {tname}: the same particles as at the start")
         states[t] = p
     pvd = os.path.join(case, "particles.pvd")
-    if check(os.path.isfile(pvd), f"{name}: particles.pvd written"):
+    if st.check(os.path.isfile(pvd), f"{name}: particles.pvd written"):
         with open(pvd) as f:
             listed = re.findall(r'file="([^"]+)"', f.read())
-        check(len(listed) == len(times), f"{name}: particles.pvd lists {len(listed)} of {len(times)} times")
+        st.check(len(listed) == len(times), f"{name}: particles.pvd lists {len(listed)} of {len(times)} times")
 
     # postProcessing
     kernel, ratio = scheme_kernel(case)
@@ -273,25 +196,25 @@ def main():
     files = []
     for root, _, fnames in os.walk(pp):
         files += [os.path.join(root, f) for f in fnames if not f.endswith(".vtp")]  # particle files, not series
-    check(len(files) > 0, f"{name}: postProcessing has {len(files)} files")
+    st.check(len(files) > 0, f"{name}: postProcessing has {len(files)} files")
     for path in sorted(files):
         rel = os.path.relpath(path, case)
         try:
             cols, arr = cmpmod.read_series_file(path)
         except Exception as e:  # noqa: BLE001 - any parse problem is the failure reported
-            check(False, f"{rel}: parses ({e})")
+            st.check(False, f"{rel}: parses ({e})")
             continue
-        if not check(arr.shape[0] > 0, f"{rel}: {arr.shape[0]} rows, columns {' '.join(cols)}"):
+        if not st.check(arr.shape[0] > 0, f"{rel}: {arr.shape[0]} rows, columns {' '.join(cols)}"):
             continue
         bad = ~np.isfinite(arr)
         if "histogram.dat" in rel:
-            check(not bad.any(), f"{rel}: finite")
+            st.check(not bad.any(), f"{rel}: finite")
             continue
         is_probe = bool(re.search(r"#\s*probes of", open(path).read(300)))
         if not is_probe:
-            check(not bad.any(), f"{rel}: no nan or inf")
+            st.check(not bad.any(), f"{rel}: no nan or inf")
             continue
-        check(not np.isinf(arr).any() and np.all(np.isfinite(arr[:, 0])), f"{rel}: no inf")
+        st.check(not np.isinf(arr).any() and np.all(np.isfinite(arr[:, 0])), f"{rel}: no inf")
         pts = probe_points(path)
         ncomp = (len(cols) - 1) // max(len(pts), 1)
         wrong = []
@@ -303,12 +226,12 @@ def main():
                 if np.isnan(row[1:]).any():
                     wrong.append(f"t = {t:g}: nan at a time with no time directory")
                 continue
-            st = states[match[0]]
-            fluid = st["type"] == 0
-            dim = int(st.get("field:dimension", [2])[0])
-            xy = st["position"][fluid][:, :dim]
-            d0 = float(st["field:spacing"][0])
-            V = float(st["field:volume"][0])
+            state = states[match[0]]
+            fluid = state["type"] == 0
+            dim = int(state.get("field:dimension", [2])[0])
+            xy = state["position"][fluid][:, :dim]
+            d0 = float(state["field:spacing"][0])
+            V = float(state["field:volume"][0])
             S = kernel_sum(pts[:, :dim], xy, V, ratio * d0, kernel, dim)
             for k in range(len(pts)):
                 vals = row[1 + k * ncomp: 1 + (k + 1) * ncomp]
@@ -317,17 +240,16 @@ def main():
                     wrong.append(f"t = {t:g}: point{k} is nan but its kernel sum is {S[k]:.3f} >= 0.5")
                 if not np.isnan(vals).any() and S[k] < 0.5 - 1e-6:
                     wrong.append(f"t = {t:g}: point{k} has a value but its kernel sum is {S[k]:.3f} < 0.5")
-        check(not wrong, f"{rel}: nan exactly where the point is outside the fluid "
-                         f"({checked} point samples at write times)" + ("; " + "; ".join(wrong[:5]) if wrong else ""))
+        st.check(not wrong, f"{rel}: nan exactly where the point is outside the fluid "
+                            f"({checked} point samples at write times)" + ("; " + "; ".join(wrong[:5]) if wrong else ""))
 
     # pictures
     plots = os.path.join(case, "plots")
     pngs = [f for f in os.listdir(plots) if f.endswith(".png")] if os.path.isdir(plots) else []
     good = [f for f in pngs if open(os.path.join(plots, f), "rb").read(8) == b"\x89PNG\r\n\x1a\n"]
-    check(len(pngs) > 0 and len(good) == len(pngs), f"{name}: shizukuPlot wrote {len(good)} PNG files")
+    st.check(len(pngs) > 0 and len(good) == len(pngs), f"{name}: shizukuPlot wrote {len(good)} PNG files")
 
-    print(f"{len(PASSED)} passed, {len(FAILURES)} failed")
-    return 1 if FAILURES else 0
+    return st.summary()
 
 
 if __name__ == "__main__":

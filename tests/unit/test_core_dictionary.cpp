@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "core/Dictionary.hpp"
+#include "../support/ErrorOf.hpp"
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -16,15 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The message of the InputError that f throws ("" if none is thrown).
-template <class F> std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 

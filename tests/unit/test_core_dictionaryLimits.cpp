@@ -7,6 +7,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "core/Dictionary.hpp"
+#include "../support/ErrorOf.hpp"
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,12 +16,7 @@ using namespace shizuku;
 
 namespace {
 std::string errorOf(const std::string& text) {
-  try {
-    Dictionary::fromString(text, "case/system/controlDict");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::errorOf([&] { Dictionary::fromString(text, "case/system/controlDict"); });
 }
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 }  // namespace
@@ -85,14 +81,7 @@ BOOST_AUTO_TEST_CASE(includes_are_bounded) {
   std::string many;
   for (int i = 0; i < 1001; ++i) many += "#include \"leaf\"\n";
   std::ofstream((dir / "many").string()) << many;
-  auto errorOfFile = [&](const char* name) {
-    try {
-      Dictionary::fromFile((dir / name).string());
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
+  auto errorOfFile = [&](const char* name) { return test::errorOf([&] { Dictionary::fromFile((dir / name).string()); }); };
   const std::string twice = errorOfFile("twice"), m = errorOfFile("many");
   std::filesystem::remove_all(dir);
   BOOST_TEST_INFO(twice);

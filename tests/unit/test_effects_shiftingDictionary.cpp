@@ -6,6 +6,7 @@
 #include "effects/ShiftingDistribution.hpp"
 #include "effects/SurfaceFitting.hpp"
 #include "effects/Effect.hpp"
+#include "../support/ErrorOf.hpp"
 #include <iostream>
 
 using namespace shizuku;
@@ -121,12 +122,7 @@ BOOST_AUTO_TEST_CASE(invalid_values) {
   const Dictionary d = Dictionary::fromString(kSchemes, "sphSchemes");
   FlowState<2> s;
   auto message = [&](const std::string& name, const char* entry) {
-    try {
-      r.create(name, d.subDict(entry), s);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
+    return test::errorOf([&] { r.create(name, d.subDict(entry), s); });
   };
   const std::string c = message("shifting/distribution", "badC");
   BOOST_TEST(c.find("0.5") != std::string::npos, c);

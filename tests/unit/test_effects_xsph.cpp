@@ -24,6 +24,18 @@ void slab(Fixture<2>& f) {
   f.update();
 }
 
+// The index of the particle at (x, y); every wall particle is given the velocity
+// (5, 5) in u, which the XSPH sum over fluid neighbours must not see.
+std::size_t particleAtWithMovingWalls(const Fixture<2>& f, std::vector<Vec<2>>& u, double x, double y) {
+  std::size_t c = 0;
+  for (std::size_t i = 0; i < f.s.size(); ++i) {
+    const Vec<2> p = f.s.particles.position[i];
+    if (p.y() == y && p.x() == x) c = i;
+    if (f.s.particles.isWall(i)) u[i] = Vec<2>(5, 5);
+  }
+  return c;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(uniform_velocity_gives_zero) {
@@ -42,13 +54,8 @@ BOOST_AUTO_TEST_CASE(jump_pulls_toward_neighbour_mean) {
   // neighbours' mean velocity 0, with the known magnitude.
   Fixture<2> f;
   slab(f);
-  std::size_t c = 0;
   std::vector<Vec<2>> u(f.s.size(), Vec<2>::Zero()), du(f.s.size(), Vec<2>::Zero());
-  for (std::size_t i = 0; i < f.s.size(); ++i) {
-    const Vec<2> x = f.s.particles.position[i];
-    if (x.y() == 6 && x.x() == 4) c = i;
-    if (f.s.particles.isWall(i)) u[i] = Vec<2>(5, 5);
-  }
+  const std::size_t c = particleAtWithMovingWalls(f, u, 4, 6);
   u[c] = Vec<2>(1, 0.5);
   XSPH<2> e(0.5);
   e.addAdvectionVelocity(f.s, u, du);
@@ -87,13 +94,8 @@ BOOST_AUTO_TEST_CASE(wall_neighbours_not_in_the_sum) {
   // walls moving at (5, 5): du = 0.
   Fixture<2> f;
   slab(f);
-  std::size_t c = 0;
   std::vector<Vec<2>> u(f.s.size(), Vec<2>::Zero()), du(f.s.size(), Vec<2>::Zero());
-  for (std::size_t i = 0; i < f.s.size(); ++i) {
-    const Vec<2> x = f.s.particles.position[i];
-    if (x.y() == 0 && x.x() == 4) c = i;
-    if (f.s.particles.isWall(i)) u[i] = Vec<2>(5, 5);
-  }
+  const std::size_t c = particleAtWithMovingWalls(f, u, 4, 0);
   f.s.particles.surface[c] = std::uint8_t(SurfaceClass::free);
   bool hasWall = false;
   for (Index k = f.s.neighbours.begin(c); k < f.s.neighbours.end(c); ++k)

@@ -19,13 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // Every entry of the case folder, to find leftovers.
 std::vector<std::string> entries(const std::string& dir) {
   std::vector<std::string> v;

@@ -1,13 +1,17 @@
 // Helpers shared by the io unit tests: a scratch case folder removed at the
-// end, random particle sets with awkward doubles, bit-exact comparison.
+// end, a file's whole content, random particle sets with awkward doubles,
+// bit-exact comparison. Included after <boost/test/unit_test.hpp>.
 #pragma once
+#include <boost/test/unit_test.hpp>
 #include "particles/ParticleSet.hpp"
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
 
 namespace shizuku::iotest {
@@ -25,6 +29,14 @@ struct ScratchDir {
     std::filesystem::remove_all(path, ec);
   }
 };
+
+// The bytes of a file ("" when it cannot be read).
+inline std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 // A double with random sign, mantissa and an exponent anywhere in
 // [1e-300, 1e300], plus a few special values, so text or float conversion
@@ -74,5 +86,15 @@ template <class T> bool sameBits(const std::vector<T>& a, const std::vector<T>& 
 }
 
 inline bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// The evolving state of two particle sets agrees bit for bit: positions,
+// velocities, pressures and shifts (what a restart must carry over).
+template <int D>
+void checkSameState(const ParticleSet<D>& a, const ParticleSet<D>& b) {
+  BOOST_TEST(sameBits(a.position, b.position));
+  BOOST_TEST(sameBits(a.velocity, b.velocity));
+  BOOST_TEST(sameBits(a.pressure, b.pressure));
+  BOOST_TEST(sameBits(a.shift, b.shift));
+}
 
 }  // namespace shizuku::iotest

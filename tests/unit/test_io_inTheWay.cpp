@@ -9,6 +9,7 @@
 
 #include "io/TimeDirectory.hpp"
 #include "test_io_helpers.hpp"
+#include "../support/ErrorOf.hpp"
 #include <fstream>
 #include <algorithm>
 #include <sstream>
@@ -19,20 +20,9 @@ using namespace shizuku::iotest;
 namespace fs = std::filesystem;
 
 namespace {
-std::string slurpFile(const std::string& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 bool throwsNaming(const std::function<void()>& f, const std::string& part1, const std::string& part2) {
-  try {
-    f();
-  } catch (const std::runtime_error& e) {
-    const std::string m = e.what();
-    return m.find(part1) != std::string::npos && m.find(part2) != std::string::npos;
-  }
-  return false;
+  const std::string m = test::errorOf<std::runtime_error>(f);
+  return m.find(part1) != std::string::npos && m.find(part2) != std::string::npos;
 }
 }  // namespace
 
@@ -41,7 +31,7 @@ BOOST_AUTO_TEST_CASE(regular_file_at_the_time_path_stays) {
   std::ofstream(c.path + "/0.5") << "my notes\n";
   BOOST_TEST(throwsNaming([&] { writeTimeDirectory<2>(c.path, "0.5", randomSet<2>(5, false, 1), TimeState{0.5, 5, 0.1, 0.1, ""}, false); },
                           c.path + "/0.5", "a file that is not a folder"));
-  BOOST_TEST(slurpFile(c.path + "/0.5") == "my notes\n");
+  BOOST_TEST(slurp(c.path + "/0.5") == "my notes\n");
   BOOST_TEST(listTimeDirectories(c.path).empty());
   for (const auto& e : fs::directory_iterator(c.path)) BOOST_TEST(e.path().filename() == "0.5");  // no tmp left
 }
@@ -52,7 +42,7 @@ BOOST_AUTO_TEST_CASE(foreign_folder_at_the_time_path_stays) {
   std::ofstream(c.path + "/1/data.csv") << "1,2,3\n";
   BOOST_TEST(throwsNaming([&] { writeTimeDirectory<2>(c.path, "1", randomSet<2>(5, false, 1), TimeState{1, 5, 0.1, 0.1, ""}, false); },
                           c.path + "/1", "holds no particles.vtp"));
-  BOOST_TEST(slurpFile(c.path + "/1/data.csv") == "1,2,3\n");
+  BOOST_TEST(slurp(c.path + "/1/data.csv") == "1,2,3\n");
 }
 
 BOOST_AUTO_TEST_CASE(empty_folder_and_earlier_time_are_replaced) {

@@ -14,15 +14,6 @@
 using namespace shizuku;
 using namespace shizuku::iotest;
 
-namespace {
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-}  // namespace
-
 BOOST_AUTO_TEST_CASE(headerAndFlushedRows) {
   ScratchDir c;
   PostProcessingFile f(c.path, "densityError", "0", "densityError.dat");

@@ -7,6 +7,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "particles/ParticleGenerator.hpp"
+#include "../support/ErrorOf.hpp"
 #include <cmath>
 #include <limits>
 
@@ -19,12 +20,7 @@ template <int D> GeneratedParticles<D> generate(const std::string& text) {
 }
 
 template <int D> std::string errorOf(const std::string& text) {
-  try {
-    generate<D>(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::errorOf([&] { generate<D>(text); });
 }
 
 #define CHECK_ERROR(D, text, ...)                                                           \
