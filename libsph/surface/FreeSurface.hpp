@@ -6,8 +6,8 @@
 // Stage 2 (Marrone scan region): a candidate is NOT free surface if a neighbour j lies in the
 // cone |r_ji| < sqrt(2) h, angle(n_i, r_ji) < pi/4, or, farther away, within h of r_i + h n_i.
 // Vicinity: a non-free fluid particle with a free-surface particle within vicinityRadius (2h).
-// Reads (system/sphSchemes): freeSurface { candidateThreshold 1.75; splashThreshold 0.4;
-//                                          vicinityRadius 2; (times h) scanRegion no; }
+// Reads (system/sphSchemes): freeSurface { candidateThreshold; splashThreshold; vicinityRadius;
+// enabled; scanRegion; }; defaults and ranges are declared in FreeSurface.cpp.
 #pragma once
 #include "core/Dictionary.hpp"
 #include "operators/FlowState.hpp"
