@@ -68,8 +68,9 @@ BOOST_AUTO_TEST_CASE(max_particles_keyword_is_an_exact_bound_for_boxes) {
   BOOST_TEST(contains(errorOf<2>("maxParticles 99; " + box, 1000), "more than maxParticles 99"));
   BOOST_TEST(generate<2>(box, 100).set.size() == 100u);
   // Out of range values.
-  BOOST_TEST(contains(errorOf<2>("maxParticles 0; " + box), "keyword 'maxParticles': must be between 1 and 2147483647"));
-  BOOST_TEST(contains(errorOf<2>("maxParticles 3e9; " + box), "keyword 'maxParticles': must be between 1 and 2147483647"));
+  BOOST_TEST(contains(errorOf<2>("maxParticles 0; " + box), "keyword 'maxParticles': 0 is below the smallest allowed 1"));
+  BOOST_TEST(contains(errorOf<2>("maxParticles 3e9; " + box),
+                      "keyword 'maxParticles': 3e9 is above the largest allowed 2147483647"));
 }
 
 BOOST_AUTO_TEST_CASE(walls_and_totals_count_against_the_limit) {
