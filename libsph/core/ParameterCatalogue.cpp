@@ -213,25 +213,27 @@ void recordParameter(const ParameterInfo& info, const Dictionary* d, const std::
 }
 
 std::string describeParametersInEffect() {
-  // Group by dictionary in first-read order; a dictionary path is shown from its
-  // system/ or constant/ part on.
-  std::vector<std::string> order;
-  std::map<std::string, std::vector<const ParameterValue*>> byDict;
+  // Group by dictionary and scope (a function object's dictionary holds keys of two
+  // scopes) in first-read order; a dictionary path is shown from system/ or constant/ on.
+  std::vector<std::pair<std::string, std::string>> order;
+  std::map<std::pair<std::string, std::string>, std::vector<const ParameterValue*>> groups;
   for (const auto& v : parametersInEffect()) {
-    if (!byDict.count(v.dictionary)) order.push_back(v.dictionary);
-    byDict[v.dictionary].push_back(&v);
+    const auto key = std::make_pair(v.dictionary, v.scope);
+    if (!groups.count(key)) order.push_back(key);
+    groups[key].push_back(&v);
   }
   std::ostringstream os;
   os << "Parameters in effect ((default): not written in the case):\n";
-  for (const auto& name : order) {
-    std::string shown = name;
+  for (const auto& key : order) {
+    std::string shown = key.first;
     for (const char* root : {"system/", "constant/"}) {
-      const auto k = name.rfind(root);
-      if (k != std::string::npos) { shown = name.substr(k); break; }
+      const auto k = shown.rfind(root);
+      if (k != std::string::npos) { shown = shown.substr(k); break; }
     }
-    const auto& values = byDict[name];
-    os << "  [" << values.front()->scope << "]" << (shown == values.front()->scope ? "" : " " + shown) << "\n";
-    for (const auto* v : values) os << "    " << v->keyword << " = " << v->value << (v->computed ? " (default, computed)" : v->defaulted ? " (default)" : "") << "\n";
+    os << "  [" << key.second << "]" << (shown == key.second ? "" : " " + shown) << "\n";
+    for (const auto* v : groups[key])
+      os << "    " << v->keyword << " = " << v->value
+         << (v->computed ? " (default, computed)" : v->defaulted ? " (default)" : "") << "\n";
   }
   return os.str();
 }
