@@ -52,8 +52,9 @@ const VectorParameter boxMin = region.vector("min", dim::length, "box: lower cor
 const VectorParameter boxMax = region.vector("max", dim::length, "box: upper corner (wall: inner surface)").required();
 const VectorParameter centre = region.vector("centre", dim::length, "circle, sphere: centre").required();
 const ScalarParameter radius = region.scalar("radius", dim::length, "circle, sphere: radius").required().above(0);
-const IntParameter layers = region.integer("layers", "wall: rows of particles outside the surface").def(3).min(1).max(1000);
-const WordListParameter openFaces = region.wordList("open", "wall: faces without layers (left right bottom top front back)");
+const IntParameter layers = region.integer("layers", "wall: rows of particles outside the surface").def(3).min(1);
+const WordListParameter openFaces = region.wordList("open", "wall: faces without layers (left right bottom top front back)")
+    .def("() (every face closed)");
 
 const ParameterGroup velocity("system/particlesDict: regions/<name>/velocity",
     "Initial velocity of a fluid region (absent: at rest).");
@@ -518,6 +519,8 @@ void checkAgainstWalls(const Dictionary& regions, const Region<D>& f, const std:
                               "): no particle of it is inside a wall box (open sides extend the box)");
   }
 }
+
+double readSpacing(const Dictionary& particlesDict) { return spacing.read(particlesDict); }
 
 template <int D>
 GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleCap) {

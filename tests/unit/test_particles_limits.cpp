@@ -98,7 +98,9 @@ BOOST_AUTO_TEST_CASE(circle_estimate_and_exact_count) {
 
 BOOST_AUTO_TEST_CASE(coordinates_far_from_the_origin_are_refused) {
   BOOST_TEST(contains(errorOf<2>("spacing 1; regions { f { type fluid; shape box; min (1e300 0); max (2e300 1); } }"),
-                      "keyword 'min': (1e+300 0) lies more than 1e+12 spacings"));
+                      "keyword 'min': 1e300 m is beyond the physically sane magnitude 1e12 m"));
+  BOOST_TEST(contains(errorOf<2>("spacing 1e-6; regions { f { type fluid; shape box; min (1e9 0); max (2e9 1); } }"),
+                      "keyword 'min': (1000000000 0) lies more than 1e+12 spacings"));
   BOOST_TEST(contains(errorOf<2>("spacing 1; regions { f { type fluid; shape circle; centre (0 -1e13); radius 3; } }"),
                       "keyword 'centre'"));
   BOOST_TEST(contains(errorOf<2>("spacing 1; regions { f { type fluid; shape circle; centre (0 0); radius 1e13; } }"),
