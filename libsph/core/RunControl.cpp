@@ -17,7 +17,7 @@ const ParameterGroup controlDict("system/controlDict", "Run control; re-read whi
 const OptionParameter startFrom = controlDict.option("startFrom", {"startTime", "latestTime"},
     "start from `startTime` or from the latest time directory").def("latestTime");
 const ScalarParameter startTime = controlDict.scalar("startTime", dim::time,
-    "start time when no time directory is read").def(0).min(0);
+    "start time when no time directory is read").def(0);
 const OptionParameter stopAt = controlDict.option("stopAt", {"endTime", "writeNow"},
     "`writeNow` writes the current state and stops (edit while running)").def("endTime");
 const ScalarParameter endTime = controlDict.scalar("endTime", dim::time, "end time (>= startTime)").required();

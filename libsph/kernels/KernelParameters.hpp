@@ -1,5 +1,5 @@
 // The kernel settings of system/sphSchemes, declared once (KernelParameters.cpp):
-//   kernel { type cubicSpline|WendlandC2; smoothingLengthRatio 1.2; }   (h = ratio x d0)
+//   kernel { type cubicSpline|WendlandC2; smoothingLengthRatio; }   (h = ratio x d0)
 // read() takes the `kernel` sub-dictionary, or nullptr when it is absent (defaults).
 #pragma once
 #include "core/Dictionary.hpp"
@@ -8,8 +8,9 @@
 namespace shizuku {
 
 struct KernelParameters {
-  KernelType type = KernelType::cubicSpline;
-  double smoothingLengthRatio = 1.2;
+  // Set by read(); defaults and ranges are declared once in KernelParameters.cpp.
+  KernelType type{};
+  double smoothingLengthRatio{};
   static KernelParameters read(const Dictionary* kernelDict);
 };
 

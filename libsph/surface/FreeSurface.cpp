@@ -31,11 +31,11 @@ const SwitchParameter scanRegion = freeSurface.onOff("scanRegion",
 
 FreeSurfaceParameters FreeSurfaceParameters::read(const Dictionary* dict, int dimension) {
   FreeSurfaceParameters p;
-  p.candidateThreshold *= dimension / 2.0;
-  p.splashThreshold *= dimension / 2.0;
+  // divR of a full neighbourhood is D: the declared (2D) thresholds scale by D/2.
   // An absent sub-dictionary gives every default (still listed for -dryRun).
-  p.candidateThreshold = key::candidateThreshold.readOr(dict, p.candidateThreshold);
-  p.splashThreshold = key::splashThreshold.readOr(dict, p.splashThreshold);
+  const double scale = dimension / 2.0;
+  p.candidateThreshold = key::candidateThreshold.readOr(dict, scale * key::candidateThreshold.info().defaultNumber);
+  p.splashThreshold = key::splashThreshold.readOr(dict, scale * key::splashThreshold.info().defaultNumber);
   p.vicinityRadius = key::vicinityRadius.read(dict);
   p.enabled = key::enabled.read(dict);
   p.scanRegion = key::scanRegion.read(dict);
