@@ -82,6 +82,9 @@ constexpr double kDefaultMaxParticles = 1e7;
 
 // particleCap > 0 lowers the dictionary's maxParticles (a program that only
 // previews or fuzzes cases uses it); it never raises it.
+// The `spacing` keyword as declared (a length > 0), for readers other than the generator.
+double readSpacing(const Dictionary& particlesDict);
+
 template <int D>
 GeneratedParticles<D> generateParticles(const Dictionary& particlesDict, double particleCap = 0);
 
