@@ -14,7 +14,7 @@ namespace key {
 const ParameterGroup kernel("system/sphSchemes: kernel", "Smoothing kernel; support 2h with h = smoothingLengthRatio x spacing.");
 const OptionParameter type = kernel.option("type", {"cubicSpline", "WendlandC2"}, "kernel function").def("cubicSpline");
 const ScalarParameter smoothingLengthRatio = kernel.scalar("smoothingLengthRatio", dim::none,
-    "h / d0; masses are calibrated so the initial lattice has <rho> = rho").def(1.2).above(0.5).below(3);
+    "h / d0; masses are calibrated so the initial lattice has `<rho> = rho`").def(1.2).above(0.5).below(3);
 
 
 }  // namespace key
