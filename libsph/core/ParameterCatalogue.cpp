@@ -30,8 +30,8 @@ std::string formatNumber(double x) {
   s.precision(10);
   s << x;
   std::string t = tidyExponent(s.str());
-  // Large round numbers read better as 1e7 than 10000000.
-  if (std::abs(x) >= 1e5 && t.find('e') == std::string::npos) {
+  // Round numbers far from 1 read better as 1e7 and 1e-4 than 10000000 and 0.0001.
+  if ((std::abs(x) >= 1e5 || (x != 0 && std::abs(x) < 1e-3)) && t.find('e') == std::string::npos) {
     for (int digits = 1; digits <= 10; ++digits) {
       std::ostringstream e;
       e.precision(digits - 1);
