@@ -191,6 +191,11 @@ std::vector<std::string> WordListParameter::read(const Dictionary& d) const {
 
 template <int D> Vec<D> VectorParameter::read(const Dictionary& d) const {
   std::string key = presentKeyword(*info_, d);
+  if (key.empty() && !info_->required) {
+    const Vec<D> zero = d.getVectorOr<D>(info_->keyword, Vec<D>::Zero(), info_->dimension);
+    recordParameter(*info_, &d, info_->defaultText(), true);
+    return zero;
+  }
   if (key.empty()) key = info_->keyword;  // required: getVector reports it missing
   const Vec<D> v = d.getVector<D>(key, info_->dimension);
   for (int k = 0; k < D; ++k) checkRange(*info_, d, key, v[k]);

@@ -172,7 +172,9 @@ class VectorParameter : public ParameterHandle<VectorParameter> {
  public:
   using ParameterHandle::ParameterHandle;
   VectorParameter& sane(double magnitude) { info_->sane = magnitude; return *this; }
-  template <int D> Vec<D> read(const Dictionary& d) const;  // required
+  // Optional, the zero vector when absent (shown as `shown`, e.g. "0 (the origin)").
+  VectorParameter& defZero(const std::string& shown) { info_->shownDefault = shown; info_->required = false; return *this; }
+  template <int D> Vec<D> read(const Dictionary& d) const;
 };
 
 // A list of vectors ((x y) (x y) ...), each component range-checked.

@@ -20,6 +20,7 @@ const ScalarParameter maxCo = group.scalar("maxCo", dim::none, "Courant number")
 const ScalarParameter nu = group.scalar("nu", dim::kinematicViscosity, "viscosity").def(0).min(0);
 const IntParameter reuse = group.integer("amgReuse", "steps").def(10).min(1).oldName("reuseSteps");
 const SwitchParameter scan = group.onOff("scanRegion", "stage 2").def(false);
+const VectorParameter centre = group.vector("centre", dim::length, "centre").defZero("0 (the origin)");
 const OptionParameter solver = group.option("solver", {"BiCGSTAB", "UMFPACK", "KLU"}, "solver").def("BiCGSTAB");
 
 std::string messageOf(const std::function<void()>& f) {
@@ -141,4 +142,15 @@ BOOST_AUTO_TEST_CASE(catalogue_and_table) {
   BOOST_TEST(contains(t, "| `amgReuse` | 10 | >= 1 | steps (old spelling `reuseSteps` still read) |"), t);
   BOOST_TEST(contains(t, "| `solver` | BiCGSTAB | BiCGSTAB \\| UMFPACK \\| KLU | solver |"), t);
   BOOST_TEST(keywordTableMarkdown("no such scope").empty());
+}
+
+BOOST_AUTO_TEST_CASE(vectors_default_and_range) {
+  const Dictionary absent = Dictionary::fromString("", "testDict");
+  BOOST_TEST(centre.read<2>(absent).isZero());
+  const Dictionary d = Dictionary::fromString("centre (1 2) [cm];\n", "testDict");
+  BOOST_TEST(centre.read<2>(d)[1] == 0.02);
+  const Dictionary far = Dictionary::fromString("centre (0 1e13);\n", "testDict");
+  const std::string m = messageOf([&] { centre.read<2>(far); });
+  BOOST_TEST(contains(m, "testDict:1:1: keyword 'centre': 1e13 m is beyond the physically sane magnitude 1e12 m"), m);
+  BOOST_TEST(contains(keywordTableMarkdown("test/testDict: sub"), "| `centre` | 0 (the origin) | [-1e12, 1e12] m | centre |"));
 }
