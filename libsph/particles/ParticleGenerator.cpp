@@ -60,6 +60,8 @@ const ParameterGroup velocity("system/particlesDict: regions/<name>/velocity",
     "Initial velocity of a fluid region (absent: at rest).");
 const OptionParameter velocityType = velocity.option("type", {"uniform", "rigidRotation", "linear", "expression"},
     "uniform value, rigid rotation omega about centre, linear gradient, or muParser expressions").required();
+const VectorParameter velocityCentre = velocity.vector("centre", dim::length,
+    "rigidRotation, linear: the centre c of U = omega x (x - c), U = G (x - c)").defZero("0 (the origin)");
 
 const ParameterGroup periodic("system/particlesDict: periodic", "Periodic box (absent: no periodic direction).");
 const VectorParameter periodicMin = periodic.vector("min", dim::length, "lower corner of the periodic box").required();
@@ -409,7 +411,7 @@ void assignVelocity(const Region<D>& reg, std::vector<Vec<D>>& u) {
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) u[i] = value;
   } else if (type == "rigidRotation") {
-    const Vec<D> c = v->getVectorOr<D>("centre", Vec<D>::Zero(), dim::length);
+    const Vec<D> c = velocityCentre.read<D>(*v);
     if constexpr (D == 2) {
       const double w = v->getScalar("omega", dim::inverseTime);
 #pragma omp parallel for schedule(static)
@@ -423,7 +425,7 @@ void assignVelocity(const Region<D>& reg, std::vector<Vec<D>>& u) {
     }
   } else if (type == "linear") {
     const Mat<D> G = v->getMatrix<D>("gradient", dim::inverseTime);
-    const Vec<D> c = v->getVectorOr<D>("centre", Vec<D>::Zero(), dim::length);
+    const Vec<D> c = velocityCentre.read<D>(*v);
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) u[i] = G * (x[i] - c);
   } else {
