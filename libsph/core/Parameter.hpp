@@ -9,7 +9,10 @@
 // "system/sphSchemes: freeSurface", ...). A ParameterGroup registers itself in
 // the global catalogue when constructed, so a group declared at namespace scope
 // in the .cpp of its reader is listed by the table generator with no further
-// wiring (the solver links every reader).
+// wiring. That .cpp must be one the solver links from its static library (one
+// holding a function the solver calls): a file nothing references is left out
+// of the link, and its group out of the tables. Put the handles in a nested
+// namespace (key::deltaT) so they do not clash with the members they fill.
 //
 // Ranges. Every number must be finite. A scalar may have a min and a max, each
 // inclusive or exclusive. Beyond that every scalar with a physical dimension has
@@ -33,7 +36,7 @@
 
 namespace shizuku {
 
-enum class ParameterType { scalar, integer, onOff, option, word, wordList, vector, vectorList };
+enum class ParameterType { scalar, integer, onOff, option, wordList, vector, vectorList };
 
 // What a declaration holds. Numbers are SI.
 struct ParameterInfo {
@@ -44,7 +47,7 @@ struct ParameterInfo {
   bool required = false;
   double defaultNumber = 0;               // scalar, integer
   bool defaultSwitch = false;             // onOff
-  std::string defaultWord;                // option, word
+  std::string defaultWord;                // option
   std::string shownDefault;               // overrides the default's text (e.g. "endTime", "unlimited")
   double min = -1e308, max = 1e308;
   bool hasMin = false, hasMax = false;

@@ -72,8 +72,7 @@ std::string ParameterInfo::defaultText() const {
     }
     case ParameterType::integer: return formatNumber(defaultNumber);
     case ParameterType::onOff: return defaultSwitch ? "on" : "off";
-    case ParameterType::option:
-    case ParameterType::word: return defaultWord;
+    case ParameterType::option: return defaultWord;
     case ParameterType::wordList: return "()";
     case ParameterType::vector:
     case ParameterType::vectorList: return "required";
@@ -87,7 +86,6 @@ std::string ParameterInfo::typeText() const {
     case ParameterType::integer: return "integer";
     case ParameterType::onOff: return "switch";
     case ParameterType::option: return "word";
-    case ParameterType::word: return "word";
     case ParameterType::wordList: return "word list";
     case ParameterType::vector: return "vector";
     case ParameterType::vectorList: return "vector list";
