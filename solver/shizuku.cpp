@@ -4,6 +4,9 @@
 //   shizuku -case DIR -dryRun                 read and check everything, print the pipeline, exit 0
 //   shizuku -case DIR -noFunctionObjects      run without function objects
 //   shizuku -version                          print the version and the commit it was built from
+//   shizuku -keywords markdown [-scope S]     print the keyword tables of every dictionary
+//                                             scope (or of scope S) from the declarations
+//   shizuku -keywords scopes                  list the declared dictionary scopes
 //
 // Reads the case directory, generates the initial particles from
 // system/particlesDict when 0/ holds none, runs the time loop and writes time
@@ -12,6 +15,7 @@
 // (after writing the last good state).
 #include "core/CommandLine.hpp"
 #include "core/Log.hpp"
+#include "core/Parameter.hpp"
 #include "isph/Simulation.hpp"
 #include "ShizukuCommit.hpp"  // generated at build time (cmake/ShizukuCommit.cmake)
 #include <boost/program_options.hpp>
@@ -37,10 +41,35 @@ int runCase(const std::string& dir, bool dryRun, bool functionObjects) {
   if (dryRun) {
     info(sim.pipeline());
     for (const auto& d : Dictionary::defaultsUsed()) info("default: " + d);
+    info(describeParametersInEffect());
     info("Dry run: the case is valid; nothing was run or written.");
     return 0;
   }
+  info(describeParametersInEffect());
   return sim.run();
+}
+
+// -keywords markdown|scopes: the catalogue of declared parameters, no case needed.
+int printKeywords(const std::string& format, const std::string& scope) {
+  if (format == "scopes") {
+    for (const auto& s : parameterScopes()) std::cout << s << "\n";
+    return 0;
+  }
+  if (format != "markdown") {
+    std::cerr << "Error: -keywords takes markdown or scopes, not '" << format << "'\n";
+    return 1;
+  }
+  if (scope.empty()) {
+    std::cout << keywordTablesMarkdown();
+    return 0;
+  }
+  const std::string table = keywordTableMarkdown(scope);
+  if (table.empty()) {
+    std::cerr << "Error: no parameters are declared in scope '" << scope << "' (shizuku -keywords scopes lists them)\n";
+    return 1;
+  }
+  std::cout << table;
+  return 0;
 }
 
 }  // namespace
@@ -53,6 +82,8 @@ int main(int argc, char** argv) {
       ("case", po::value<std::string>()->default_value("."), "case directory (default: the current folder)")
       ("dryRun", "read and check the whole case, print the active pipeline and exit 0 without running")
       ("noFunctionObjects", "run without function objects")
+      ("keywords", po::value<std::string>(), "print the declared keywords and exit: markdown (tables) or scopes")
+      ("scope", po::value<std::string>()->default_value(""), "with -keywords markdown: only this dictionary scope")
       ("threads", po::value<int>()->default_value(0), "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
   installStopSignalHandlers();  // a signal during a long set-up stops cleanly too
   po::variables_map vm;
@@ -63,6 +94,7 @@ int main(int argc, char** argv) {
     std::cout << kVersion << "\n";
     return 0;
   }
+  if (vm.count("keywords")) return printKeywords(vm["keywords"].as<std::string>(), vm["scope"].as<std::string>());
   const std::string dir = vm["case"].as<std::string>();
   if (vm["threads"].as<int>() > 0) omp_set_num_threads(vm["threads"].as<int>());
 

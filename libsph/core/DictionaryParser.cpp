@@ -374,6 +374,9 @@ class DictionaryParser {
         v.number = t.numberValue;
         if (!std::isfinite(v.number))
           fail(t.where, key, "the number " + t.text + " is out of range (a double holds up to about 1.8e308)");
+        if (underflows(t.text, v.number))
+          fail(t.where, key, "the number " + t.text + " is out of range (too small: a double holds down to about "
+                             "2.2e-308, and this would read as " + (v.number == 0 ? "0" : "a denormal") + ")");
         break;
       case Token::word: v.kind = DictValue::Kind::word; return v;
       case Token::string: v.kind = DictValue::Kind::string; return v;
@@ -426,11 +429,22 @@ class DictionaryParser {
     return v;
   }
 
+  // A number written nonzero that reads as 0 or a denormal (1e-400): out of range,
+  // not silently zero.
+  static bool underflows(const std::string& text, double x) {
+    if (std::isnormal(x)) return false;
+    for (char c : text) {
+      if (c == 'e' || c == 'E') break;
+      if (c >= '1' && c <= '9') return true;
+    }
+    return false;
+  }
+
   static void applyUnit(DictValue& v, const Unit& unit, const Token& u, const std::string& key) {
     if (v.hasUnit) fail(u.where, key, "the value already has a unit [" + v.unitText + "]");
     if (v.kind == DictValue::Kind::number) {
       v.number *= unit.factor;
-      if (!std::isfinite(v.number))
+      if (!std::isfinite(v.number) || underflows(v.text, v.number))
         fail(u.where, key, "the number " + v.text + " [" + u.text + "] is out of range in SI units");
     } else if (v.kind == DictValue::Kind::list) {
       for (auto& item : v.items) applyUnit(item, unit, u, key);

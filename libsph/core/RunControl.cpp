@@ -1,36 +1,68 @@
-// Reading and evaluating the run-control keys of system/controlDict.
+// Reading and evaluating the run-control keys of system/controlDict, declared
+// once below (keyword, default, range, meaning; docs/dictionaries.md is generated
+// from these declarations).
 #include "core/RunControl.hpp"
+#include "core/Parameter.hpp"
 #include <cmath>
 
 namespace shizuku {
 
+namespace {
+
+namespace key {
+
+// Time bounds: a step below 1e-12 s is a unit slip in any SPH case; every time
+// has the sane magnitude bound of 1e12 s.
+const ParameterGroup controlDict("system/controlDict", "Run control; re-read while running (`stopAt writeNow;` stops a run).");
+const OptionParameter startFrom = controlDict.option("startFrom", {"startTime", "latestTime"},
+    "start from `startTime` or from the latest time directory").def("latestTime");
+const ScalarParameter startTime = controlDict.scalar("startTime", dim::time,
+    "start time when no time directory is read").def(0);
+const OptionParameter stopAt = controlDict.option("stopAt", {"endTime", "writeNow"},
+    "`writeNow` writes the current state and stops (edit while running)").def("endTime");
+const ScalarParameter endTime = controlDict.scalar("endTime", dim::time, "end time (>= startTime)").required();
+const ScalarParameter deltaT = controlDict.scalar("deltaT", dim::time,
+    "time step (the first step with adjustTimeStep)").required().min(1e-12);
+const SwitchParameter adjustTimeStep = controlDict.onOff("adjustTimeStep",
+    "adapt the step to maxCo, viscosity, gravity and maxDeltaT").def(false);
+const ScalarParameter maxCo = controlDict.scalar("maxCo", dim::none,
+    "largest Courant number maxCo = dt max|U| / h (adjustTimeStep)").def(0.2).above(0).max(10);
+const ScalarParameter maxDeltaT = controlDict.scalar("maxDeltaT", dim::time,
+    "largest step with adjustTimeStep").def(1e300).shownDefault("unlimited").min(1e-12);
+const OptionParameter writeControl = controlDict.option("writeControl", {"timeStep", "runTime", "adjustableRunTime"},
+    "write every writeInterval steps, or seconds (adjustableRunTime lands on write times)").def("timeStep");
+const ScalarParameter writeInterval = controlDict.scalar("writeInterval", dim::none,
+    "steps (timeStep) or seconds between writes").def(100).shownDefault("100 steps; endTime with a run-time writeControl")
+    .above(0).max(1e12);
+const OptionParameter writeFormat = controlDict.option("writeFormat", {"binary", "ascii"},
+    "VTK data encoding of the time directories").def("binary");
+const IntParameter progressInterval = controlDict.integer("progressInterval",
+    "steps between progress lines in the log").def(100).min(1);
+
+
+}  // namespace key
+}  // namespace
+
 RunControl RunControl::read(const Dictionary& d) {
   RunControl rc;
-  rc.startFrom = d.getOptionOr("startFrom", {"startTime", "latestTime"}, "latestTime") == "startTime"
-                     ? StartFrom::startTime : StartFrom::latestTime;
-  rc.startTime = d.getScalarOr("startTime", 0.0, dim::time);
-  rc.stopAt = d.getOptionOr("stopAt", {"endTime", "writeNow"}, "endTime") == "writeNow" ? StopAt::writeNow
-                                                                                       : StopAt::endTime;
-  rc.endTime = d.getScalar("endTime", dim::time);
-  rc.deltaT = d.getScalar("deltaT", dim::time);
-  if (!(rc.deltaT > 0) || !std::isfinite(rc.deltaT)) d.error("deltaT", "must be a positive number");
-  if (!std::isfinite(rc.endTime) || rc.endTime < rc.startTime) d.error("endTime", "must be >= startTime");
-  rc.adjustTimeStep = d.getSwitchOr("adjustTimeStep", false);
-  rc.maxCo = d.getScalarOr("maxCo", 0.2, dim::none);
-  if (!(rc.maxCo > 0)) d.error("maxCo", "must be > 0");
-  rc.maxDeltaT = d.getScalarOr("maxDeltaT", 1e300, dim::time);
-  if (!(rc.maxDeltaT > 0)) d.error("maxDeltaT", "must be > 0");
-  const std::string wc = d.getOptionOr("writeControl", {"timeStep", "runTime", "adjustableRunTime"}, "timeStep");
+  rc.startFrom = key::startFrom.read(d) == "startTime" ? StartFrom::startTime : StartFrom::latestTime;
+  rc.startTime = key::startTime.read(d);
+  rc.stopAt = key::stopAt.read(d) == "writeNow" ? StopAt::writeNow : StopAt::endTime;
+  rc.endTime = key::endTime.read(d);
+  rc.deltaT = key::deltaT.read(d);
+  if (rc.endTime < rc.startTime) d.error("endTime", "must be >= startTime");
+  rc.adjustTimeStep = key::adjustTimeStep.read(d);
+  rc.maxCo = key::maxCo.read(d);
+  rc.maxDeltaT = key::maxDeltaT.read(d);
+  const std::string wc = key::writeControl.read(d);
   rc.writeControl = wc == "timeStep" ? WriteControl::timeStep
                     : wc == "runTime" ? WriteControl::runTime : WriteControl::adjustableRunTime;
-  rc.writeInterval = d.getScalarOr("writeInterval", rc.writeControl == WriteControl::timeStep ? 100.0 : rc.endTime,
-                                   rc.writeControl == WriteControl::timeStep ? dim::none : dim::time);
-  if (!(rc.writeInterval > 0)) d.error("writeInterval", "must be > 0");
+  rc.writeInterval = rc.writeControl == WriteControl::timeStep ? key::writeInterval.readOr(d, 100.0)
+                                                                : key::writeInterval.readOr(d, rc.endTime, dim::time);
   if (rc.writeControl == WriteControl::timeStep && rc.writeInterval != std::floor(rc.writeInterval))
     d.error("writeInterval", "must be a whole number of steps with writeControl timeStep");
-  rc.ascii = d.getOptionOr("writeFormat", {"binary", "ascii"}, "binary") == "ascii";
-  rc.progressInterval = d.getIntOr("progressInterval", 100);
-  if (rc.progressInterval <= 0) d.error("progressInterval", "must be > 0");
+  rc.ascii = key::writeFormat.read(d) == "ascii";
+  rc.progressInterval = key::progressInterval.read(d);
   d.markRead("functions");
   d.markRead("healthChecks");
   return rc;

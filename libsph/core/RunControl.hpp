@@ -1,8 +1,7 @@
-// Run control from system/controlDict (design.md 1.2):
-//   startFrom startTime|latestTime; startTime; stopAt endTime|writeNow; endTime; deltaT;
-//   adjustTimeStep yes|no; maxCo; maxDeltaT; writeControl timeStep|runTime|adjustableRunTime;
-//   writeInterval; writeFormat binary|ascii; progressInterval (steps between progress lines);
-//   functions { ... } (read by the function-object list, not here).
+// Run control from system/controlDict (design.md 1.2): reads startFrom, startTime,
+// stopAt, endTime, deltaT, adjustTimeStep, maxCo, maxDeltaT, writeControl,
+// writeInterval, writeFormat, progressInterval (declared in RunControl.cpp);
+// functions { ... } and healthChecks { ... } are read elsewhere.
 // The controlDict is re-read while running (reread()), so editing `stopAt writeNow;` stops a run.
 #pragma once
 #include "core/Dictionary.hpp"
@@ -15,18 +14,19 @@ struct RunControl {
   enum class StopAt { endTime, writeNow };
   enum class WriteControl { timeStep, runTime, adjustableRunTime };
 
-  StartFrom startFrom = StartFrom::latestTime;
-  double startTime = 0;
-  StopAt stopAt = StopAt::endTime;
-  double endTime = 0;
-  double deltaT = 0;
-  bool adjustTimeStep = false;
-  double maxCo = 0.2;
-  double maxDeltaT = 1e300;
-  WriteControl writeControl = WriteControl::timeStep;
-  double writeInterval = 1;
-  bool ascii = false;
-  int progressInterval = 100;
+  // Set by read(); the defaults, ranges and meanings are declared once in RunControl.cpp.
+  StartFrom startFrom{};
+  double startTime{};
+  StopAt stopAt{};
+  double endTime{};
+  double deltaT{};
+  bool adjustTimeStep{};
+  double maxCo{};
+  double maxDeltaT{};
+  WriteControl writeControl{};
+  double writeInterval{};
+  bool ascii{};
+  int progressInterval{};
 
   // Read from a parsed controlDict (errors name file, line and keyword).
   static RunControl read(const Dictionary& dict);

@@ -1,5 +1,7 @@
 // Function object `densityError` (eq. 22): see DensityError.hpp.
+// Reads histogram { min; max; bins; write; } through the declarations below.
 #include "functionObjects/DensityError.hpp"
+#include "core/Parameter.hpp"
 #include "io/TimeName.hpp"
 #include <cmath>
 #include <limits>
@@ -7,22 +9,31 @@
 
 namespace shizuku {
 
+namespace {
+namespace key {
+// Histogram of the density error in percent; bins beyond 1e6 would only cost memory.
+const ParameterGroup histogram("system/controlDict: functions/<name>/histogram (type densityError)",
+    "Histogram of the density error (percent) written by densityError.");
+const ScalarParameter histogramMin = histogram.scalar("min", dim::none, "lower edge (percent)").def(-10).min(-1e6).max(1e6);
+const ScalarParameter histogramMax = histogram.scalar("max", dim::none, "upper edge (percent, > min)").def(10).min(-1e6).max(1e6);
+const IntParameter histogramBins = histogram.integer("bins", "number of bins").def(80).min(1).max(1000000);
+const OptionParameter histogramWrite = histogram.option("write", {"writeTime", "sample", "no"},
+    "write the histogram at write times, at every sample, or never").def("writeTime");
+}  // namespace key
+}  // namespace
 
 template <int D>
 DensityError<D>::DensityError(const std::string& name, const Dictionary& dict)
     : SampledFunctionObject<D>(name, "densityError", dict) {
-  if (const Dictionary* h = dict.subDictPtr("histogram")) {
-    min_ = h->getScalarOr("min", -10.0, dim::none);
-    max_ = h->getScalarOr("max", 10.0, dim::none);
-    bins_ = h->getIntOr("bins", 80);
-    const std::string w = h->getOptionOr("write", {"writeTime", "sample", "no"}, "writeTime");
-    write_ = w == "writeTime" ? HistogramWrite::writeTime
-             : w == "sample"  ? HistogramWrite::sample : HistogramWrite::no;
-    if (!(max_ > min_)) h->error("max", "must be greater than min");
-    if (bins_ < 1) h->error("bins", "must be >= 1");
-  } else {
-    dict.getWordOr("histogram", "{ min -10; max 10; bins 80; write writeTime; }");  // lists the default
-  }
+  const Dictionary* h = dict.subDictPtr("histogram");
+  if (!h) dict.getWordOr("histogram", "{ min -10; max 10; bins 80; write writeTime; }");  // lists the default
+  min_ = key::histogramMin.read(h);
+  max_ = key::histogramMax.read(h);
+  bins_ = key::histogramBins.read(h);
+  const std::string w = key::histogramWrite.read(h);
+  write_ = w == "writeTime" ? HistogramWrite::writeTime
+           : w == "sample"  ? HistogramWrite::sample : HistogramWrite::no;
+  if (!(max_ > min_)) h->error("max", "must be greater than min");
   result_.histInterior.assign(std::size_t(bins_), 0);
   result_.histAll.assign(std::size_t(bins_), 0);
 }

@@ -1,6 +1,8 @@
 // Function object `probes`: Shepard-normalised SPH interpolation at points; see Probes.hpp.
+// Reads fields, points, minKernelSum through the declarations below.
 #include "functionObjects/Probes.hpp"
 #include "core/Log.hpp"
+#include "core/Parameter.hpp"
 #include <algorithm>
 #include <limits>
 
@@ -8,6 +10,15 @@ namespace shizuku {
 
 static_assert(sizeof(Vec<2>) == 2 * sizeof(double) && sizeof(Vec<3>) == 3 * sizeof(double),
               "vectors are read as contiguous doubles");
+
+namespace {
+const ParameterGroup probes("system/controlDict: functions/<name> (type probes)",
+    "Shepard-normalised SPH interpolation of fields at fixed points.");
+const WordListParameter fieldsParameter = probes.wordList("fields", "fields to sample: p rhoN U normal shift").required();
+const VectorListParameter pointsParameter = probes.vectorList("points", dim::length, "probe points ((x y) ...)").required();
+const ScalarParameter minKernelSum = probes.scalar("minKernelSum", dim::none,
+    "smallest Shepard sum of a valid sample (below: NaN, e.g. a point in air)").def(0.5).above(0).max(1e6);
+}  // namespace
 
 template <int D>
 std::string Probes<D>::fieldUnit(const std::string& field) {
@@ -20,7 +31,7 @@ std::string Probes<D>::fieldUnit(const std::string& field) {
 
 template <int D>
 Probes<D>::Probes(const std::string& name, const Dictionary& dict) : SampledFunctionObject<D>(name, "probes", dict) {
-  fields_ = dict.getWordList("fields");
+  fields_ = fieldsParameter.read(dict);
   if (fields_.empty()) dict.error("fields", "needs at least one field, e.g. (p U)");
   const auto known = knownFields();
   for (const auto& f : fields_) {
@@ -32,10 +43,9 @@ Probes<D>::Probes(const std::string& name, const Dictionary& dict) : SampledFunc
     if (std::count(fields_.begin(), fields_.end(), f) > 1) dict.error("fields", "field '" + f + "' is listed twice");
     comps_.push_back(f == "p" || f == "rhoN" ? 1 : D);
   }
-  points_ = dict.getVectorList<D>("points", dim::length);
+  points_ = pointsParameter.read<D>(dict);
   if (points_.empty()) dict.error("points", "needs at least one point, e.g. ((0 0))");
-  minKernelSum_ = dict.getScalarOr("minKernelSum", 0.5, dim::none);
-  if (!(minKernelSum_ > 0)) dict.error("minKernelSum", "must be > 0");
+  minKernelSum_ = minKernelSum.read(dict);
   kernelSum_.assign(points_.size(), 0);
   for (std::size_t f = 0; f < fields_.size(); ++f) values_.emplace_back(points_.size() * comps_[f], 0.0);
 }

@@ -1,26 +1,38 @@
 // Sampling schedule of one function object: see SampleControl.hpp.
 #include "functionObjects/SampleControl.hpp"
 #include "core/Log.hpp"
+#include "core/Parameter.hpp"
 #include <algorithm>
 #include <cmath>
 
 namespace shizuku {
 
+namespace {
+const ParameterGroup sampling("system/controlDict: functions/<name>",
+    "Keys of every function object: its type and when it samples.");
+const OptionParameter writeControl = sampling.option("writeControl",
+    {"timeStep", "runTime", "adjustableRunTime", "writeTime"}, "sample every writeInterval steps or seconds, or at write times")
+    .def("timeStep");
+const ScalarParameter writeInterval = sampling.scalar("writeInterval", dim::none,
+    "steps (timeStep) or seconds between samples; not with writeTime")
+    .def(1).shownDefault("1 step; required with a run-time writeControl").above(0).max(1e12);
+}  // namespace
+
 SampleControl SampleControl::read(const Dictionary& d) {
   SampleControl c;
-  const std::string m =
-      d.getOptionOr("writeControl", {"timeStep", "runTime", "adjustableRunTime", "writeTime"}, "timeStep");
+  const std::string m = writeControl.read(d);
   c.mode_ = m == "timeStep" ? Mode::timeStep
             : m == "runTime" ? Mode::runTime
             : m == "adjustableRunTime" ? Mode::adjustableRunTime : Mode::writeTime;
   if (c.mode_ == Mode::timeStep) {
-    c.interval_ = d.getIntOr("writeInterval", 1);
-    if (c.interval_ < 1) d.error("writeInterval", "must be a whole number of steps >= 1 with writeControl timeStep");
+    c.interval_ = writeInterval.readOr(d, 1.0);
+    if (c.interval_ < 1 || c.interval_ != std::floor(c.interval_))
+      d.error("writeInterval", "must be a whole number of steps >= 1 with writeControl timeStep");
   } else if (c.mode_ == Mode::writeTime) {
     if (d.found("writeInterval")) d.error("writeInterval", "is not used with writeControl writeTime; remove it");
   } else {
-    c.interval_ = d.getScalar("writeInterval", dim::time);
-    if (!(c.interval_ > 0) || !std::isfinite(c.interval_)) d.error("writeInterval", "must be a positive time");
+    if (!d.found("writeInterval")) d.getScalar("writeInterval", dim::time);  // missing: an error naming it
+    c.interval_ = writeInterval.readOr(d, 0.0, dim::time);
   }
   return c;
 }

@@ -1,6 +1,7 @@
 // When a function object samples (design.md 1.3): its own
-//   writeControl  timeStep | runTime | adjustableRunTime | writeTime;  (default timeStep)
-//   writeInterval N (steps, timeStep) | seconds (runTime, adjustableRunTime);  (default 1)
+//   writeControl  timeStep | runTime | adjustableRunTime | writeTime;
+//   writeInterval N (steps, timeStep) | seconds (runTime, adjustableRunTime);
+// (defaults and ranges declared in SampleControl.cpp)
 // timeStep:   sample when step % N == 0;
 // runTime / adjustableRunTime (the same here: the solver adjusts dt only for its
 //             own write times): sample when floor(t / interval) has advanced

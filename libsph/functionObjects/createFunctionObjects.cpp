@@ -1,6 +1,7 @@
 // The function-object factory (design.md 1.3): one object per entry of the
 // controlDict `functions { <name> { type <type>; ... } }`, built only when listed.
 // Reads (controlDict): functions { <name> { type probes|densityError|conservation|fluidExtent|timing; ... } }
+#include "core/Parameter.hpp"
 #include "functionObjects/Conservation.hpp"
 #include "functionObjects/DensityError.hpp"
 #include "functionObjects/FluidExtent.hpp"
@@ -15,9 +16,16 @@ std::vector<std::string> functionObjectTypes() {
   return {"probes", "densityError", "conservation", "fluidExtent", "timing"};
 }
 
+namespace {
+// The scope is shared with the sampling keys of SampleControl.cpp.
+const ParameterGroup functionObject("system/controlDict: functions/<name>",
+    "Keys of every function object: its type and when it samples.");
+const OptionParameter typeParameter = functionObject.option("type", functionObjectTypes(), "what the object computes").required();
+}  // namespace
+
 template <int D>
 std::unique_ptr<FunctionObject<D>> createFunctionObject(const std::string& name, const Dictionary& dict) {
-  const std::string type = dict.getOption("type", functionObjectTypes());
+  const std::string type = typeParameter.read(dict);
   if (type == "probes") return std::make_unique<Probes<D>>(name, dict);
   if (type == "densityError") return std::make_unique<DensityError<D>>(name, dict);
   if (type == "conservation") return std::make_unique<Conservation<D>>(name, dict);

@@ -1,20 +1,10 @@
-// Kernel normalisations, names and lattice sums (methods.md section 2).
+// Kernel normalisations and lattice sums (methods.md section 2).
 // The kernel values themselves are inline in Kernel.hpp (hot loops).
-// Reads no dictionary keys (the solver maps kernel/type with kernelTypeFromName).
+// Reads no dictionary keys (kernel names and settings: KernelParameters.cpp).
 #include "kernels/Kernel.hpp"
 #include <cmath>
 
 namespace shizuku {
-
-KernelType kernelTypeFromName(const std::string& name) {
-  if (name == "cubicSpline") return KernelType::cubicSpline;
-  if (name == "WendlandC2") return KernelType::WendlandC2;
-  throw InputError("unknown kernel type '" + name + "': valid types are cubicSpline, WendlandC2");
-}
-
-std::string toString(KernelType t) {
-  return t == KernelType::cubicSpline ? "cubicSpline" : "WendlandC2";
-}
 
 template <int D>
 Kernel<D>::Kernel(KernelType type, double h) : type_(type), h_(h) {

@@ -1,16 +1,12 @@
 // The linear-solver factory: reads the `pressure` sub-dictionary of
 // system/sphSolution (design.md part 2, methods.md 4.2) and builds a backend:
-//   solver          BiCGSTAB | UMFPACK | KLU | SparseLU        (default BiCGSTAB)
-//   preconditioner  AMG | ILU0 | ILUT | diagonal | hypreAMG    (BiCGSTAB; default AMG, the own
-//                                                              smoothed aggregation; hypreAMG only
-//                                                              in builds with -DSHIZUKU_HYPRE=ON)
-//   amgReuse 10                                                (AMG, hypreAMG: steps a hierarchy is kept)
-//   tolerance 1e-8; maxIterations 2000;                        (BiCGSTAB)
-//   blocks N                                                   (ILU0; default: one per thread)
-//   dropTolerance 1e-4; fillFactor 10;                         (ILUT)
-//   reuseSymbolic yes                                          (KLU, UMFPACK)
-// The default was chosen by measurement: docs/performance.md.
+// solver BiCGSTAB|UMFPACK|KLU|SparseLU; BiCGSTAB: tolerance, maxIterations,
+// preconditioner AMG|ILU0|ILUT|diagonal|hypreAMG with amgReuse (AMG, hypreAMG),
+// blocks (ILU0), dropTolerance and fillFactor (ILUT); reuseSymbolic (KLU, UMFPACK).
+// Defaults and ranges are declared once below; the default was chosen by
+// measurement (docs/performance.md).
 #include "linearSolvers/LinearSolver.hpp"
+#include "core/Parameter.hpp"
 #include "linearSolvers/AggregationAMG.hpp"
 #include "linearSolvers/Krylov.hpp"
 #include "linearSolvers/SolverBackends.hpp"
@@ -38,8 +34,33 @@ std::unique_ptr<LinearSolver> LinearSolver::create(const Dictionary* d) {
   return createHook() ? createHook()(d) : createBuiltin(d);
 }
 
+namespace {
+
+namespace key {
+
+const ParameterGroup pressure("system/sphSolution: pressure", "Pressure Poisson equation solver (methods 4.2).");
+const OptionParameter solver = pressure.option("solver", LinearSolver::names(),
+    "BiCGSTAB (warm-started, falls back to LU) or a direct LU").def("BiCGSTAB");
+const ScalarParameter tolerance = pressure.scalar("tolerance", dim::none,
+    "BiCGSTAB: relative residual to reach").def(1e-8).above(0).below(1);
+const IntParameter maxIterations = pressure.integer("maxIterations", "BiCGSTAB: iteration limit").def(2000).min(1);
+const OptionParameter preconditioner = pressure.option("preconditioner", LinearSolver::preconditionerNames(),
+    "BiCGSTAB preconditioner (hypreAMG: builds with -DSHIZUKU_HYPRE=ON)").def("AMG");
+const IntParameter amgReuse = pressure.integer("amgReuse",
+    "AMG, hypreAMG: steps a hierarchy is kept (1: rebuilt every step)").def(10).min(1);
+const IntParameter blocks = pressure.integer("blocks", "ILU0: diagonal blocks (0: one per thread)").def(0).min(0);
+const ScalarParameter dropTolerance = pressure.scalar("dropTolerance", dim::none, "ILUT: drop tolerance")
+    .def(1e-4).min(0).below(1);
+const IntParameter fillFactor = pressure.integer("fillFactor", "ILUT: fill factor").def(10).min(1);
+const SwitchParameter reuseSymbolic = pressure.onOff("reuseSymbolic",
+    "KLU, UMFPACK: reuse the symbolic factorization while the pattern holds").def(true);
+
+
+}  // namespace key
+}  // namespace
+
 std::unique_ptr<LinearSolver> LinearSolver::createBuiltin(const Dictionary* d) {
-  const std::string type = d ? d->getOptionOr("solver", names(), "BiCGSTAB") : "BiCGSTAB";
+  const std::string type = key::solver.read(d);
   const bool iterative = type == "BiCGSTAB";
   if (d) {
     // Settings of the other family do not apply: accepted and ignored.
@@ -49,33 +70,25 @@ std::unique_ptr<LinearSolver> LinearSolver::createBuiltin(const Dictionary* d) {
     else d->markRead("reuseSymbolic");
   }
   if (!iterative) {
-    const bool reuse = d ? d->getSwitchOr("reuseSymbolic", true) : true;
+    const bool reuse = key::reuseSymbolic.read(d);
     if (type == "UMFPACK") return makeUMFPACK(reuse);
     if (type == "KLU") return makeKLU(reuse);
     return makeSparseLU();
   }
   IterativeSettings s;
-  s.tolerance = d ? d->getScalarOr("tolerance", 1e-8, dim::none) : 1e-8;
-  s.maxIterations = d ? d->getIntOr("maxIterations", 2000) : 2000;
-  if (d && !(s.tolerance > 0)) d->error("tolerance", "must be > 0");
-  if (d && s.maxIterations <= 0) d->error("maxIterations", "must be > 0");
-  const std::string def = "AMG";
-  const std::string pc = d ? d->getOptionOr("preconditioner", preconditionerNames(), def) : def;
+  s.tolerance = key::tolerance.read(d);
+  s.maxIterations = key::maxIterations.read(d);
+  const std::string pc = key::preconditioner.read(d);
   // Keys of the other preconditioners are accepted and ignored.
   if (d)
     for (const char* k : {"blocks", "dropTolerance", "fillFactor", "amgReuse"}) d->markRead(k);
   std::unique_ptr<Preconditioner> p;
   if (pc == "ILUT") {
-    const double drop = d ? d->getScalarOr("dropTolerance", 1e-4, dim::none) : 1e-4;
-    const int fill = d ? d->getIntOr("fillFactor", 10) : 10;
-    if (d && !(drop >= 0)) d->error("dropTolerance", "must be >= 0");
-    if (d && fill <= 0) d->error("fillFactor", "must be > 0");
-    p = makeILUT(drop, fill);
+    p = makeILUT(key::dropTolerance.read(d), key::fillFactor.read(d));
   } else if (pc == "diagonal") {
     p = std::make_unique<DiagonalPreconditioner>();
   } else if (pc == "AMG" || pc == "hypreAMG") {
-    const int reuse = d ? d->getIntOr("amgReuse", 10) : 10;
-    if (d && reuse < 1) d->error("amgReuse", "must be >= 1 (1: a new hierarchy every step)");
+    const int reuse = key::amgReuse.read(d);
     if (pc == "AMG") {
       p = std::make_unique<AggregationAMG>(reuse);
     } else {
@@ -85,9 +98,7 @@ std::unique_ptr<LinearSolver> LinearSolver::createBuiltin(const Dictionary* d) {
       p = makeHypreAMG(reuse);
     }
   } else {
-    const int blocks = d ? d->getIntOr("blocks", 0) : 0;
-    if (d && blocks < 0) d->error("blocks", "must be >= 0 (0: one block per thread)");
-    p = std::make_unique<BlockILU0>(blocks);
+    p = std::make_unique<BlockILU0>(key::blocks.read(d));
   }
   return makeBiCGSTAB(s, std::move(p));
 }

@@ -6,6 +6,7 @@
 // ParticleGenerator.hpp.
 #include "particles/ParticleGenerator.hpp"
 #include "core/Log.hpp"
+#include "core/Parameter.hpp"
 #include <muParser.h>
 #include <algorithm>
 #include <array>
@@ -25,6 +26,40 @@ constexpr double kMaxSpacingsFromOrigin = 1e12;
 // Numbers in messages as the dictionary prints them (formatNumber).
 std::string fmt(double x) { return formatNumber(x); }
 template <int D> std::string fmt(const Vec<D>& v) { return formatNumber<D>(v); }
+// The particlesDict keys, declared once (ParticleGenerator.hpp explains what each
+// builds). Coordinates have the sane bound 1e12 m; the reach check below ties them
+// to the spacing as well.
+const ParameterGroup particles("system/particlesDict", "Spacing, particle limit and dimension of the initial particles.");
+const ScalarParameter spacing = particles.scalar("spacing", dim::length, "particle spacing d0").required().above(0);
+const ScalarParameter maxParticles = particles.scalar("maxParticles", dim::none,
+    "largest particle count, checked before anything is allocated").def(kDefaultMaxParticles).min(1).max(2147483647.0);
+const IntParameter dimensionKey = particles.integer("dimension", "2 or 3; selects the 2D or 3D solver")
+    .def(2).min(2).max(3);
+
+const ParameterGroup region("system/particlesDict: regions/<name>", "One fluid or wall region (in file order).");
+const OptionParameter regionType = region.option("type", {"fluid", "wall"}, "fluid particles, or wall layers").required();
+const OptionParameter shape = region.option("shape", {"box", "circle", "sphere"},
+    "box (fluid and wall), circle or sphere (fluid)").required();
+const VectorParameter boxMin = region.vector("min", dim::length, "box: lower corner (wall: inner surface)").required();
+const VectorParameter boxMax = region.vector("max", dim::length, "box: upper corner (wall: inner surface)").required();
+const VectorParameter centre = region.vector("centre", dim::length, "circle, sphere: centre").required();
+const ScalarParameter radius = region.scalar("radius", dim::length, "circle, sphere: radius").required().above(0);
+const IntParameter layers = region.integer("layers", "wall: rows of particles outside the surface").def(3).min(1);
+const WordListParameter openFaces = region.wordList("open", "wall: faces without layers (left right bottom top front back)")
+    .def("() (every face closed)");
+
+const ParameterGroup velocity("system/particlesDict: regions/<name>/velocity",
+    "Initial velocity of a fluid region (absent: at rest).");
+const OptionParameter velocityType = velocity.option("type", {"uniform", "rigidRotation", "linear", "expression"},
+    "uniform value, rigid rotation omega about centre, linear gradient, or muParser expressions").required();
+const VectorParameter velocityCentre = velocity.vector("centre", dim::length,
+    "rigidRotation, linear: the centre c of U = omega x (x - c), U = G (x - c)").defZero("0 (the origin)");
+
+const ParameterGroup periodic("system/particlesDict: periodic", "Periodic box (absent: no periodic direction).");
+const VectorParameter periodicMin = periodic.vector("min", dim::length, "lower corner of the periodic box").required();
+const VectorParameter periodicMax = periodic.vector("max", dim::length, "upper corner of the periodic box").required();
+const WordListParameter directions = periodic.wordList("directions", "periodic directions").def("all (x y, or x y z)");
+
 const char* axisName(int k) { return k == 0 ? "x" : k == 1 ? "y" : "z"; }
 
 // Names of the box faces in the order -x +x -y +y -z +z.
@@ -133,8 +168,8 @@ void checkReach(const Dictionary& r, const std::string& key, const Vec<D>& x, do
 
 template <int D>
 void readBox(const Dictionary& r, Region<D>& reg, double d0) {
-  reg.min = r.getVector<D>("min", dim::length);
-  reg.max = r.getVector<D>("max", dim::length);
+  reg.min = boxMin.read<D>(r);
+  reg.max = boxMax.read<D>(r);
   checkReach<D>(r, "min", reg.min, d0);
   checkReach<D>(r, "max", reg.max, d0);
   for (int k = 0; k < D; ++k)
@@ -167,8 +202,7 @@ Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, con
   Region<D> reg = newRegion<D>(r, name, true);
   for (const char* k : {"layers", "open"})
     if (hasKey<D>(r, k)) r.error(k, std::string("only wall regions take '") + k + "'");
-  const std::string shape = r.getOption("shape", {"box", "circle", "sphere"});
-  if (shape == "box") {
+  if (shape.read(r) == "box") {
     readBox<D>(r, reg, d0);
     double count = 1;
     std::array<double, D> n;
@@ -186,10 +220,9 @@ Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, con
     }
   } else {
     reg.circle = true;
-    reg.centre = r.getVector<D>("centre", dim::length);
+    reg.centre = centre.read<D>(r);
     checkReach<D>(r, "centre", reg.centre, d0);
-    reg.radius = r.getScalar("radius", dim::length);
-    if (!(reg.radius > 0)) r.error("radius", "must be positive, found " + fmt(reg.radius));
+    reg.radius = radius.read(r);
     if (!(reg.radius / d0 <= kMaxSpacingsFromOrigin))
       r.error("radius", fmt(reg.radius) + " m is more than " + fmt(kMaxSpacingsFromOrigin) + " spacings");
     // Lattice points inside: about the disc area (sphere volume) over d0^D.
@@ -205,13 +238,12 @@ Region<D> readWall(const Dictionary& r, const std::string& name, double d0, cons
                    double limit) {
   Region<D> reg = newRegion<D>(r, name, false);
   if (hasKey<D>(r, "velocity")) r.error("velocity", "wall regions are fixed; velocity is for fluid regions only");
-  r.getOption("shape", {"box"});
+  if (shape.read(r) != "box") r.error("shape", "a wall region is a box; circle and sphere are for fluid regions");
   readBox<D>(r, reg, d0);
-  reg.layers = r.getIntOr("layers", 3);
-  if (reg.layers < 1) r.error("layers", "must be at least 1, found " + std::to_string(reg.layers));
-  if (r.found("open")) {
+  reg.layers = layers.read(r);
+  {
     const auto faces = faceNames(D);
-    for (const auto& w : r.getWordList("open")) {
+    for (const auto& w : openFaces.read(r)) {
       auto it = std::find(faces.begin(), faces.end(), w);
       if (it == faces.end()) {
         std::string list;
@@ -370,13 +402,13 @@ void assignVelocity(const Region<D>& reg, std::vector<Vec<D>>& u) {
   if (!v) return;
   const std::vector<Vec<D>>& x = reg.points;
   const long n = long(x.size());
-  const std::string type = v->getOption("type", {"uniform", "rigidRotation", "linear", "expression"});
+  const std::string type = velocityType.read(*v);
   if (type == "uniform") {
     const Vec<D> value = v->getVector<D>("value", dim::velocity);
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) u[i] = value;
   } else if (type == "rigidRotation") {
-    const Vec<D> c = v->getVectorOr<D>("centre", Vec<D>::Zero(), dim::length);
+    const Vec<D> c = velocityCentre.read<D>(*v);
     if constexpr (D == 2) {
       const double w = v->getScalar("omega", dim::inverseTime);
 #pragma omp parallel for schedule(static)
@@ -390,7 +422,7 @@ void assignVelocity(const Region<D>& reg, std::vector<Vec<D>>& u) {
     }
   } else if (type == "linear") {
     const Mat<D> G = v->getMatrix<D>("gradient", dim::inverseTime);
-    const Vec<D> c = v->getVectorOr<D>("centre", Vec<D>::Zero(), dim::length);
+    const Vec<D> c = velocityCentre.read<D>(*v);
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) u[i] = G * (x[i] - c);
   } else {
@@ -403,14 +435,14 @@ PeriodicBox<D> readPeriodic(const Dictionary& dict, double d0) {
   PeriodicBox<D> box;
   const Dictionary* p = dict.subDictPtr("periodic");
   if (!p) return box;
-  box.lo = p->getVector<D>("min", dim::length);
-  box.hi = p->getVector<D>("max", dim::length);
+  box.lo = periodicMin.read<D>(*p);
+  box.hi = periodicMax.read<D>(*p);
   checkReach<D>(*p, "min", box.lo, d0);
   checkReach<D>(*p, "max", box.hi, d0);
   std::vector<std::string> axes;
   for (int k = 0; k < D; ++k) axes.push_back(axisName(k));
   std::vector<std::string> dirs = axes;
-  if (p->found("directions")) dirs = p->getWordList("directions");
+  if (p->found("directions")) dirs = directions.read(*p);
   for (const auto& w : dirs) {
     auto it = std::find(axes.begin(), axes.end(), w);
     if (it == axes.end()) {
@@ -487,20 +519,19 @@ void checkAgainstWalls(const Dictionary& regions, const Region<D>& f, const std:
   }
 }
 
+double readSpacing(const Dictionary& particlesDict) { return spacing.read(particlesDict); }
+
 template <int D>
 GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleCap) {
   GeneratedParticles<D> out;
-  const double d0 = dict.getScalar("spacing", dim::length);
-  if (!(d0 > 0)) dict.error("spacing", "must be positive, found " + fmt(d0));
+  const double d0 = spacing.read(dict);
   const double tol = kSlack * d0;
   // maxParticles: a bound on the particle count checked before anything is
   // allocated (Index is 32-bit); a caller's cap may lower it further.
-  double limit = dict.getScalarOr("maxParticles", kDefaultMaxParticles, dim::none);
-  if (!(limit >= 1 && limit <= 2147483647.0))
-    dict.error("maxParticles", "must be between 1 and 2147483647, found " + fmt(limit));
+  double limit = maxParticles.read(dict);
   if (particleCap > 0) limit = std::min(limit, particleCap);
   // `dimension` (optional) is how the solver picks 2D or 3D; it must agree.
-  if (dict.found("dimension") && dict.getInt("dimension") != D)
+  if (dict.found("dimension") && dimensionKey.read(dict) != D)
     dict.error("dimension", "is " + std::to_string(dict.getInt("dimension")) + " but the particles are being built in " +
                                 std::to_string(D) + "D");
   out.periodic = readPeriodic<D>(dict, d0);
@@ -510,7 +541,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
   std::vector<Region<D>> fluids, walls;
   for (const auto& name : regionsDict.keys()) {
     const Dictionary& r = regionsDict.subDict(name);
-    if (r.getOption("type", {"fluid", "wall"}) == "fluid")
+    if (regionType.read(r) == "fluid")
       fluids.push_back(readFluid<D>(r, name, d0, regionsDict, limit));
     else
       walls.push_back(readWall<D>(r, name, d0, regionsDict, limit));

@@ -2,12 +2,13 @@
 // wall layers as methods.md section 11: fluid at (i + 1/2) d0 from a wall
 // line, dummy layers at -(k + 1/2) d0, k = 0..layers-1).
 //
-// Keys read:
+// Keys read (declared once, with defaults and ranges, in ParticleGenerator.cpp;
+// the tables in docs/dictionaries.md are generated from those declarations):
 //   spacing  d0 (a length, > 0)
 //   dimension 2 | 3 (optional; the solver chooses 2D or 3D from it; must equal D)
 //   regions { <name> { type fluid|wall; shape box|circle; ... } }   (in file order)
 //   periodic { min (..); max (..); directions (x y); }              (optional)
-//   maxParticles N (optional, default 1e7, at most 2^31 - 1): the regions
+//   maxParticles N (optional, at most 2^31 - 1): the regions
 //            are counted before anything is allocated (each region alone,
 //            then all together, before overlap removal) and a case over the
 //            limit is an InputError naming the region and the count.
@@ -38,7 +39,7 @@
 //
 // Wall regions
 //   shape box: min, max are the wall SURFACE (the inner faces); `layers N`
-//   (default 3) rows of particles are built outside it on the lattice
+//   rows of particles are built outside it on the lattice
 //   min + (i + 1/2) d0, corners included. `open (top)` lists faces that get no
 //   layers: left right bottom top (-x +x -y +y), in 3D also front back
 //   (-z +z); on an open side the other walls end at the box edge. The box
@@ -81,6 +82,9 @@ constexpr double kDefaultMaxParticles = 1e7;
 
 // particleCap > 0 lowers the dictionary's maxParticles (a program that only
 // previews or fuzzes cases uses it); it never raises it.
+// The `spacing` keyword as declared (a length > 0), for readers other than the generator.
+double readSpacing(const Dictionary& particlesDict);
+
 template <int D>
 GeneratedParticles<D> generateParticles(const Dictionary& particlesDict, double particleCap = 0);
 

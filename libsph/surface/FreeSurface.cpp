@@ -1,23 +1,47 @@
 // Free-surface detection, classes and normals: methods.md 5.1-5.3.
+// Reads system/sphSchemes freeSurface { candidateThreshold; splashThreshold;
+// vicinityRadius; enabled; scanRegion; } through the declarations below.
 #include "surface/FreeSurface.hpp"
+#include "core/Parameter.hpp"
 #include <cmath>
 
 namespace shizuku {
 
+namespace {
+
+namespace key {
+
+// divR is D for a full neighbourhood, so thresholds above 3 would mark every particle.
+const ParameterGroup freeSurface("system/sphSchemes: freeSurface",
+    "Free-surface detection (methods 5): divR thresholds, vicinity, scan region.");
+const ScalarParameter candidateThreshold = freeSurface.scalar("candidateThreshold", dim::none,
+    "divR below this: free-surface candidate (stage 1)").def(1.75).shownDefault("1.75 (2D), 2.625 (3D)").min(0).max(3);
+const ScalarParameter splashThreshold = freeSurface.scalar("splashThreshold", dim::none,
+    "divR below this: splash particle (<= candidateThreshold)").def(0.4).shownDefault("0.4 (2D), 0.6 (3D)").min(0).max(3);
+const ScalarParameter vicinityRadius = freeSurface.scalar("vicinityRadius", dim::none,
+    "vicinity of the surface, times h").def(2).above(0).max(2);
+const SwitchParameter enabled = freeSurface.onOff("enabled",
+    "off for a closed domain without free surface (pressure level pinned)").def(true);
+const SwitchParameter scanRegion = freeSurface.onOff("scanRegion",
+    "stage 2, Marrone's scan region, on the candidates (off: stage 1 alone)").def(false);
+
+
+}  // namespace key
+}  // namespace
+
 FreeSurfaceParameters FreeSurfaceParameters::read(const Dictionary* dict, int dimension) {
   FreeSurfaceParameters p;
-  p.candidateThreshold *= dimension / 2.0;
-  p.splashThreshold *= dimension / 2.0;
+  // divR of a full neighbourhood is D: the declared (2D) thresholds scale by D/2.
+  // An absent sub-dictionary gives every default (still listed for -dryRun).
+  const double scale = dimension / 2.0;
+  p.candidateThreshold = key::candidateThreshold.readOr(dict, scale * key::candidateThreshold.info().defaultNumber);
+  p.splashThreshold = key::splashThreshold.readOr(dict, scale * key::splashThreshold.info().defaultNumber);
+  p.vicinityRadius = key::vicinityRadius.read(dict);
+  p.enabled = key::enabled.read(dict);
+  p.scanRegion = key::scanRegion.read(dict);
   if (!dict) return p;
-  p.candidateThreshold = dict->getScalarOr("candidateThreshold", p.candidateThreshold, dim::none);
-  p.splashThreshold = dict->getScalarOr("splashThreshold", p.splashThreshold, dim::none);
-  p.vicinityRadius = dict->getScalarOr("vicinityRadius", p.vicinityRadius, dim::none);
-  p.enabled = dict->getSwitchOr("enabled", true);
-  p.scanRegion = dict->getSwitchOr("scanRegion", false);
   if (p.splashThreshold > p.candidateThreshold)
     dict->error("splashThreshold", "must not exceed candidateThreshold");
-  if (p.vicinityRadius <= 0 || p.vicinityRadius > 2.0)
-    dict->error("vicinityRadius", "must be in (0, 2] (times h; the neighbour search radius is 2h)");
   return p;
 }
 

@@ -6,8 +6,8 @@
 // Stage 2 (Marrone scan region): a candidate is NOT free surface if a neighbour j lies in the
 // cone |r_ji| < sqrt(2) h, angle(n_i, r_ji) < pi/4, or, farther away, within h of r_i + h n_i.
 // Vicinity: a non-free fluid particle with a free-surface particle within vicinityRadius (2h).
-// Reads (system/sphSchemes): freeSurface { candidateThreshold 1.75; splashThreshold 0.4;
-//                                          vicinityRadius 2; (times h) scanRegion no; }
+// Reads (system/sphSchemes): freeSurface { candidateThreshold; splashThreshold; vicinityRadius;
+// enabled; scanRegion; }; defaults and ranges are declared in FreeSurface.cpp.
 #pragma once
 #include "core/Dictionary.hpp"
 #include "operators/FlowState.hpp"
@@ -15,16 +15,17 @@
 namespace shizuku {
 
 struct FreeSurfaceParameters {
-  double candidateThreshold = 1.75;  // on divR (D = 2; scaled by D/2 in 3D)
-  double splashThreshold = 0.4;
-  double vicinityRadius = 2.0;       // times h
-  bool enabled = true;               // false for a closed domain without free surface
+  // Set by read(); defaults, ranges and meanings are declared once in FreeSurface.cpp.
+  double candidateThreshold{};  // on divR (the 2D default is scaled by D/2 in 3D)
+  double splashThreshold{};
+  double vicinityRadius{};      // times h
+  bool enabled{};               // false for a closed domain without free surface
   // Stage 2 (Marrone scan region) on the stage-1 candidates. Off by default: at a
   // dam-break toe the front particle on the wall is overhung by its neighbour,
   // the scan region reclassifies it as interior, its Laplacian row then has a
   // one-sided stencil without a Dirichlet neighbour and the pressure blows up
   // within 0.03 s (measured, tutorials/damBreak); stage 1 alone runs on.
-  bool scanRegion = false;
+  bool scanRegion{};
   static FreeSurfaceParameters read(const Dictionary* dict, int dimension);
 };
 

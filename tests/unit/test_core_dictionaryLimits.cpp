@@ -32,10 +32,25 @@ BOOST_AUTO_TEST_CASE(overflowing_numbers_are_errors) {
 }
 
 BOOST_AUTO_TEST_CASE(large_finite_numbers_read) {
-  const Dictionary d = Dictionary::fromString("a 1.7e308; b 1e305 [kPa]; c 1e-400;");
+  const Dictionary d = Dictionary::fromString("a 1.7e308; b 1e305 [kPa]; c 2.3e-308; z 0e-400;");
   BOOST_TEST(d.getScalar("a", dim::none) == 1.7e308);
   BOOST_TEST(d.getScalar("b", dim::pressure) == 1e308);
-  BOOST_TEST(d.getScalar("c", dim::none) == 0.0);  // underflow reads as zero
+  BOOST_TEST(d.getScalar("c", dim::none) == 2.3e-308);  // the smallest normal doubles still read
+  BOOST_TEST(d.getScalar("z", dim::none) == 0.0);       // a written zero is zero
+}
+
+BOOST_AUTO_TEST_CASE(underflowing_numbers_are_out_of_range) {
+  // A nonzero number that would read as 0 or a denormal is refused, not silently zero.
+  for (const char* text : {"c 1e-400;", "c 1e-310;", "c 1e-306 [mm];"}) {
+    std::string m;
+    try {
+      Dictionary::fromString(text);
+    } catch (const InputError& e) {
+      m = e.what();
+    }
+    BOOST_TEST(m.find("keyword 'c': the number") != std::string::npos, text << ": " << m);
+    BOOST_TEST(m.find("out of range") != std::string::npos, text << ": " << m);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(unit_powers_are_bounded) {

@@ -1,11 +1,12 @@
 // Kernel tests (methods.md section 2): normalisation, derivative, gradient
 // antisymmetry, compact support, lattice sums against the table of methods.md 2
-// (verify/rsp_p0.out), kernel names.
+// (verify/rsp_p0.out), kernel names, the declared kernel { } settings.
 #define BOOST_TEST_MODULE kernels
 #include <boost/test/unit_test.hpp>
 
 #include "kernels/Kernel.hpp"
 #include "../support/ErrorOf.hpp"
+#include "kernels/KernelParameters.hpp"
 #include <cmath>
 
 using namespace shizuku;
@@ -116,4 +117,22 @@ BOOST_AUTO_TEST_CASE(names) {
   }
   BOOST_CHECK_THROW(Kernel<2>(KernelType::cubicSpline, 0.0), InputError);
   BOOST_CHECK_THROW(Kernel<2>(KernelType::cubicSpline, 1.0).latticeSum(-1.0), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(kernel_settings_from_declarations) {
+  const KernelParameters absent = KernelParameters::read(nullptr);
+  BOOST_TEST(int(absent.type) == int(KernelType::cubicSpline));
+  BOOST_TEST(absent.smoothingLengthRatio == 1.2);
+  const Dictionary d = Dictionary::fromString("type WendlandC2; smoothingLengthRatio 1.5;\n", "sphSchemes/kernel");
+  const KernelParameters p = KernelParameters::read(&d);
+  BOOST_TEST(int(p.type) == int(KernelType::WendlandC2));
+  BOOST_TEST(p.smoothingLengthRatio == 1.5);
+  const Dictionary bad = Dictionary::fromString("smoothingLengthRatio 3;\n", "sphSchemes/kernel");
+  std::string m;
+  try { KernelParameters::read(&bad); } catch (const InputError& e) { m = e.what(); }
+  BOOST_TEST(m.find("sphSchemes/kernel:1:1: keyword 'smoothingLengthRatio': 3 must be less than 3") != std::string::npos, m);
+  const Dictionary typo = Dictionary::fromString("type Wendland;\n", "sphSchemes/kernel");
+  m.clear();
+  try { KernelParameters::read(&typo); } catch (const InputError& e) { m = e.what(); }
+  BOOST_TEST(m.find("did you mean 'WendlandC2'?") != std::string::npos, m);
 }

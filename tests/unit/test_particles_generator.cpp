@@ -379,7 +379,7 @@ regions { f { type fluid; shape box; min (0 0 0); max (1 1 1); } })");
 
 BOOST_AUTO_TEST_CASE(input_errors) {
   const std::string box = "shape box; min (0 0); max (1 1);";
-  CHECK_ERROR(2, "spacing 0; regions { f { type fluid; " + box + " } }", "keyword 'spacing'", "must be positive");
+  CHECK_ERROR(2, "spacing 0; regions { f { type fluid; " + box + " } }", "keyword 'spacing'", "0 must be greater than 0 m");
   CHECK_ERROR(2, "spacing 1 [s]; regions { f { type fluid; " + box + " } }", "keyword 'spacing'",
               "unit [s] has dimension [s] but a length [m] is expected");
   CHECK_ERROR(2, "regions { f { type fluid; " + box + " } }", "keyword 'spacing': missing");
@@ -410,7 +410,7 @@ BOOST_AUTO_TEST_CASE(input_errors) {
   CHECK_ERROR(2, "spacing 0.1; regions { f { type fluid; " + box + " }\n w { type wall; shape box; min (0 0); max (2.05 2); } }",
               "keyword 'max'", "wall box size in x (2.05 m) is not a whole number of spacings");
   CHECK_ERROR(2, "spacing 0.1; regions { f { type fluid; " + box + " }\n w { type wall; shape circle; centre (0 0); radius 1; } }",
-              "keyword 'shape'", "'circle' is not one of: box");
+              "keyword 'shape'", "a wall region is a box");
   CHECK_ERROR(2, "spacing 0.1; regions { f 1; }", "keyword 'f'", "expected a sub-dictionary");
   CHECK_ERROR(3, "dimension 2; spacing 0.1; regions { f { type fluid; shape box; min (0 0 0); max (1 1 1); } }",
               "keyword 'dimension'", "is 2 but the particles are being built in 3D");
