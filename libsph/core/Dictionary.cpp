@@ -34,13 +34,6 @@ const std::vector<std::string> kSwitchFalse = {"off", "no", "false"};
 
 }  // namespace
 
-std::string formatNumber(double x) {
-  std::ostringstream s;
-  s.precision(10);
-  s << x;
-  return s.str();
-}
-
 // --- basic access ------------------------------------------------------------
 
 const DictValue* Dictionary::find(const std::string& key) const {

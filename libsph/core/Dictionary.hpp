@@ -122,7 +122,8 @@ class Dictionary {
   template <int D> Vec<D> vectorOf(const std::string& key, const DictValue& v, Dimension d) const;
 };
 
-// A number or a vector as the messages and the log print it: 10 significant digits.
+// A number or a vector as the messages, the log and the keyword tables print it: 10
+// significant digits, round numbers far from 1 as powers of ten ("0.001", "1e-8", "1e12").
 std::string formatNumber(double x);
 template <int D> std::string formatNumber(const Vec<D>& v) {
   std::string s = "(";

@@ -206,7 +206,4 @@ class ParameterGroup {
   ParameterInfo* add(const std::string& keyword, ParameterType type, const std::string& doc) const;
 };
 
-// Number formatting shared by messages and tables: "0.001", "1e-8", "1e12".
-std::string formatNumber(double x);
-
 }  // namespace shizuku

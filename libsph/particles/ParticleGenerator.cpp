@@ -26,6 +26,8 @@ constexpr double kMaxSpacingsFromOrigin = 1e12;
 // Numbers in messages as the dictionary prints them (formatNumber).
 std::string fmt(double x) { return formatNumber(x); }
 template <int D> std::string fmt(const Vec<D>& v) { return formatNumber<D>(v); }
+// A particle count in full digits (a user compares it with maxParticles digit by digit).
+std::string countText(double n) { return n < 1e15 ? std::to_string(std::llround(n)) : formatNumber(n); }
 // The particlesDict keys, declared once (ParticleGenerator.hpp explains what each
 // builds). Coordinates have the sane bound 1e12 m; the reach check below ties them
 // to the spacing as well.
@@ -178,11 +180,11 @@ void readBox(const Dictionary& r, Region<D>& reg, double d0) {
                          axisName(k) + ")");
 }
 
-// "fluid region 'water' would hold 1e+08 particles, more than maxParticles 1e+07 ..."
+// "fluid region 'water' would hold 100000000 particles, more than maxParticles 10000000 ..."
 [[noreturn]] void tooMany(const Dictionary& regions, const std::string& name, const char* kind, double count,
                           double limit, double d0) {
-  regions.error(name, std::string(kind) + " region '" + name + "' would hold " + fmt(count) +
-                          " particles, more than maxParticles " + fmt(limit) + " (spacing " + fmt(d0) +
+  regions.error(name, std::string(kind) + " region '" + name + "' would hold " + countText(count) +
+                          " particles, more than maxParticles " + countText(limit) + " (spacing " + fmt(d0) +
                           " m): use a larger spacing, or raise maxParticles in particlesDict");
 }
 
@@ -562,8 +564,8 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
         total += r.circle ? (D == 2 ? M_PI * a * a : 4.0 / 3.0 * M_PI * a * a * a) : r.fluid ? inner : outer - inner;
       }
     if (total > limit)
-      regionsDict.error("regions", "the regions would hold " + fmt(std::round(total)) + " particles, more than maxParticles " +
-                                       fmt(limit) + " (spacing " + fmt(d0) +
+      regionsDict.error("regions", "the regions would hold " + countText(total) + " particles, more than maxParticles " +
+                                       countText(limit) + " (spacing " + fmt(d0) +
                                        " m): use a larger spacing, or raise maxParticles in particlesDict");
   }
   for (std::size_t b = 0; b < fluids.size(); ++b)
@@ -629,7 +631,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
   const std::size_t nf = fluidPoints.size(), nw = wallPoints.size(), n = nf + nw;
   if (double(n) > limit)
     regionsDict.error("regions", "the regions hold " + std::to_string(n) + " particles, more than maxParticles " +
-                                     fmt(limit) + ": use a larger spacing, or raise maxParticles in particlesDict");
+                                     countText(limit) + ": use a larger spacing, or raise maxParticles in particlesDict");
   set.resize(n);
   set.spacing = d0;
 #pragma omp parallel for schedule(static)
