@@ -17,7 +17,8 @@
 //   approaching yes   only pairs closing in, (u_i - u_j) . r_ij < 0, act.
 //   wallDistance      d_ADS for a wall partner (times d0), default: `distance`
 //                     (1 pushed the coarse dam break and drop over-dense, docs/shifting.md).
-// Reads (system/sphSchemes, ads): distance 0.95; wallDistance = distance; (times d0; docs/shifting.md, "ADS distance")  C 1;  partners surface;  approaching no;
+// Reads (system/sphSchemes, ads): distance, wallDistance (times d0), C, partners, approaching;
+// defaults and ranges are declared in ADS.cpp (docs/dictionaries.md, keyword reference).
 #pragma once
 #include "effects/Effect.hpp"
 

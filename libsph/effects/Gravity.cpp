@@ -3,6 +3,7 @@
 // (docs/method.md 4.3).
 // Reads: constant/g `value` (acceleration vector).
 #include "effects/EffectFactories.hpp"
+#include "effects/PhysicalProperties.hpp"
 
 namespace shizuku {
 namespace {
@@ -36,7 +37,7 @@ class Gravity final : public ForceEffect<D> {
 
 template <int D>
 std::unique_ptr<Effect<D>> makeGravity(const Dictionary& gDict, const FlowState<D>&) {
-  return std::make_unique<Gravity<D>>(gDict.getVector<D>("value", dim::acceleration));
+  return std::make_unique<Gravity<D>>(readGravity<D>(gDict));
 }
 
 SHIZUKU_EFFECT_FACTORY(makeGravity);

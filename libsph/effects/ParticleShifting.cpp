@@ -1,10 +1,22 @@
 // Particle shifting, eq. (10): see ParticleShifting.hpp.
 #include "effects/ParticleShifting.hpp"
 #include "boundaries/WallParticles.hpp"
-#include "effects/EffectParameters.hpp"
+#include "core/Parameter.hpp"
 #include "effects/ShiftCap.hpp"
 
 namespace shizuku {
+
+namespace {
+namespace key {
+const ParameterGroup shifting("system/sphSchemes: shifting",
+    "Particle shifting, eq. 10: its terms (sub-dictionaries distribution, volumeCorrection, surfaceFitting), the cap "
+    "and the Taylor correction (docs/method.md 6-8).");
+const ScalarParameter maxShift = shifting.scalar("maxShift", dim::none, "cap on |dr|, times h").def(0.1).above(0).max(1);
+const OptionParameter taylorCorrection = shifting.option("taylorCorrection",
+    {"on", "yes", "true", "off", "no", "false", "everywhere", "belowSurface", "interior"},
+    "u += <grad u> dr on: interior and vicinity (on = belowSurface), interior, everywhere, or off").def("on");
+}  // namespace key
+}  // namespace
 
 template <int D>
 std::unique_ptr<ParticleShifting<D>> ParticleShifting<D>::create(const Dictionary* sh,
@@ -20,9 +32,8 @@ std::unique_ptr<ParticleShifting<D>> ParticleShifting<D>::create(const Dictionar
       e.release();
       p->terms_.emplace_back(t);
     }
-  p->maxShift_ = positive(*sh, "maxShift", 0.1);
-  const std::string t = sh->getOptionOr(
-      "taylorCorrection", {"on", "yes", "true", "off", "no", "false", "everywhere", "belowSurface", "interior"}, "on");
+  p->maxShift_ = key::maxShift.read(*sh);
+  const std::string t = key::taylorCorrection.read(*sh);
   if (t == "off" || t == "no" || t == "false") p->taylor_ = TaylorCorrection::off;
   else if (t == "everywhere") p->taylor_ = TaylorCorrection::everywhere;
   else if (t == "interior") p->taylor_ = TaylorCorrection::interior;

@@ -4,11 +4,11 @@
 // Taylor correction of the velocity u_i += <grad u>_i dr_i (docs/method.md 6) on the
 // particles where the velocity gradient is two-sided. One object owns the terms, the
 // cap and the correction; a case without shifting terms builds none of it.
-// Reads (system/sphSchemes, shifting): distribution {..} volumeCorrection {..}
-//   surfaceFitting {..} (each term's keys in its own header); maxShift 0.1 (times h);
-//   taylorCorrection on|belowSurface|interior|everywhere|off (on = belowSurface: interior
-//   and vicinity particles; on free-surface and splash particles the one-sided gradient
-//   is unreliable and the product pumps energy, docs/shifting.md).
+// Reads (system/sphSchemes, shifting): the terms' sub-dictionaries distribution, volumeCorrection,
+// surfaceFitting (keys in each term's header); maxShift (times h) and taylorCorrection
+// on|belowSurface|interior|everywhere|off (on = belowSurface: interior and vicinity particles;
+// on free-surface and splash particles the one-sided gradient is unreliable and the product
+// pumps energy, docs/shifting.md); declared in ParticleShifting.cpp.
 #pragma once
 #include "core/StageTimers.hpp"
 #include "effects/Effect.hpp"

@@ -1,9 +1,20 @@
 // Stabilized ISPH (Asai et al. 2012), eq. (9), methods.md 4.1: the PPE source
 // gains alpha (rho - <rho>_i) / dt^2 on interior and vicinity rows.
-// Reads (system/sphSchemes): pressureStabilization { type densityInvariant; alpha 1e-3; }
+// Reads (system/sphSchemes, pressureStabilization): type densityInvariant, alpha (both required).
+#include "core/Parameter.hpp"
 #include "effects/EffectFactories.hpp"
 
 namespace shizuku {
+
+namespace {
+namespace key {
+const ParameterGroup stabilization("system/sphSchemes: pressureStabilization",
+    "Stabilized ISPH: the density-invariant PPE source term, eq. 9 (docs/method.md 4.1).");
+const OptionParameter type = stabilization.option("type", {"densityInvariant"}, "the source term").required();
+const ScalarParameter alpha = stabilization.scalar("alpha", dim::none, "relaxation coefficient").required().min(0).max(1);
+}  // namespace key
+}  // namespace
+
 namespace {
 
 template <int D>
@@ -29,10 +40,8 @@ class DensityInvariantSource final : public PressureSourceEffect<D> {
 
 template <int D>
 std::unique_ptr<Effect<D>> makePressureStabilization(const Dictionary& dict, const FlowState<D>&) {
-  dict.getOption("type", {"densityInvariant"});
-  const double alpha = dict.getScalar("alpha", dim::none);
-  if (alpha < 0) dict.error("alpha", "must be >= 0");
-  return std::make_unique<DensityInvariantSource<D>>(alpha);
+  key::type.read(dict);
+  return std::make_unique<DensityInvariantSource<D>>(key::alpha.read(dict));
 }
 
 SHIZUKU_EFFECT_FACTORY(makePressureStabilization);

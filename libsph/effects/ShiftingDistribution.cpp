@@ -2,10 +2,26 @@
 // keys in ShiftingDistribution.hpp (methods.md 6, 7).
 #include "effects/ShiftingDistribution.hpp"
 #include "effects/EffectFactories.hpp"
-#include "effects/EffectParameters.hpp"
+#include "core/Parameter.hpp"
 #include <cmath>
 
 namespace shizuku {
+
+namespace {
+namespace key {
+const ParameterGroup distribution("system/sphSchemes: shifting/distribution",
+    "Particle-distribution shift: OPS (eqs. 11-13) or DPS (eq. 14), docs/method.md 6-7.");
+const OptionParameter type = distribution.option("type", {"OPS", "DPS"}, "OPS (Lind et al.) or DPS (Morikawa)").def("OPS");
+const ScalarParameter C = distribution.scalar("C", dim::none, "coefficient (OPS: <= 0.5)").def(0.2).min(0).max(10);
+const ScalarParameter Rp = distribution.scalar("Rp", dim::none, "OPS anti-clumping amplitude").def(0.2).min(0);
+const ScalarParameter np = distribution.scalar("np", dim::none, "OPS anti-clumping exponent").def(4).min(0);
+const OptionParameter gradient = distribution.option("gradient", {"kernel", "corrected", "concentration"},
+    "OPS gradient of the concentration").def("kernel");
+const ScalarParameter projectionThreshold = distribution.scalar("projectionThreshold", dim::none,
+    "|sum V grad W| h below which a vicinity particle is shifted like an interior one").def(0.01).min(0);
+}  // namespace key
+}  // namespace
+
 namespace {
 const char* gradientName(DistributionParameters::Gradient g) {
   switch (g) {
@@ -98,18 +114,17 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
 template <int D>
 std::unique_ptr<Effect<D>> makeShiftingDistribution(const Dictionary& d, const FlowState<D>&) {
   DistributionParameters p;
-  const std::string type = d.getOptionOr("type", {"OPS", "DPS"}, "OPS");
-  p.type = type == "OPS" ? DistributionParameters::Type::OPS : DistributionParameters::Type::DPS;
-  p.C = nonNegative(d, "C", 0.2);
+  p.type = key::type.read(d) == "OPS" ? DistributionParameters::Type::OPS : DistributionParameters::Type::DPS;
+  p.C = key::C.read(d);
   if (p.type == DistributionParameters::Type::OPS) {
-    if (p.C > 0.5) d.error("C", "must be <= 0.5 (stability of the shifting diffusion, methods.md 6)");
-    p.Rp = nonNegative(d, "Rp", 0.2);
-    p.np = nonNegative(d, "np", 4);
-    const std::string g = d.getOptionOr("gradient", {"kernel", "corrected", "concentration"}, "kernel");
+    if (p.C > 0.5) d.error("C", "must be <= 0.5 with type OPS (stability of the shifting diffusion, docs/method.md 6)");
+    p.Rp = key::Rp.read(d);
+    p.np = key::np.read(d);
+    const std::string g = key::gradient.read(d);
     using G = DistributionParameters::Gradient;
     p.gradient = g == "kernel" ? G::kernel : g == "corrected" ? G::corrected : G::concentration;
   }
-  p.projectionThreshold = nonNegative(d, "projectionThreshold", 0.01);
+  p.projectionThreshold = key::projectionThreshold.read(d);
   return std::make_unique<ShiftingDistribution<D>>(p);
 }
 

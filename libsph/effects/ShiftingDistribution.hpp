@@ -31,9 +31,8 @@
 //
 // A free/splash/vicinity particle whose normal is undefined (zero) gets no shift.
 // Wall particles are never shifted.
-// Reads (system/sphSchemes, shifting/distribution):
-//   type OPS|DPS; C 0.2; Rp 0.2; np 4; gradient kernel|corrected|concentration;
-//   projectionThreshold 0.01;
+// Reads (system/sphSchemes, shifting/distribution): type (OPS|DPS), C, Rp, np, gradient
+// (kernel|corrected|concentration), projectionThreshold; declared in ShiftingDistribution.cpp.
 #pragma once
 #include "effects/Effect.hpp"
 

@@ -1,11 +1,28 @@
 // Surface-fitting shift, eq. (19); formula, gates and sign in SurfaceFitting.hpp.
 #include "effects/SurfaceFitting.hpp"
 #include "effects/EffectFactories.hpp"
-#include "effects/EffectParameters.hpp"
+#include "core/Parameter.hpp"
 #include "surface/SurfaceFit.hpp"
 #include <cmath>
 
 namespace shizuku {
+
+namespace {
+namespace key {
+const ParameterGroup fit("system/sphSchemes: shifting/surfaceFitting",
+    "Surface-fitting shift of free-surface particles, eq. 19 (docs/method.md 8); gates in units of d0.");
+const ScalarParameter C = fit.scalar("C", dim::none, "coefficient C_suf").def(1e-4).min(0).max(1);
+const ScalarParameter maxCurvature = fit.scalar("maxCurvature", dim::none, "act only where |kappa| d0 is below this")
+    .def(0.2).above(0);
+const ScalarParameter minDistance = fit.scalar("minDistance", dim::none, "act only where |s|/d0 is above this").def(0.15).min(0);
+const ScalarParameter maxDistance = fit.scalar("maxDistance", dim::none, "... and below this (> minDistance)").def(0.6).above(0);
+const ScalarParameter curvatureFactor = fit.scalar("curvatureFactor", dim::none, "factor of the curvature of eq. 20")
+    .def(0.34).above(0);
+const OptionParameter sign = fit.option("sign", {"smoothing", "asPrinted"},
+    "smoothing: toward the fitted surface; asPrinted: eq. 19 literally").def("smoothing");
+}  // namespace key
+}  // namespace
+
 
 template <int D>
 std::string SurfaceFitting<D>::describe() const {
@@ -38,13 +55,13 @@ void SurfaceFitting<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr)
 template <int D>
 std::unique_ptr<Effect<D>> makeSurfaceFitting(const Dictionary& d, const FlowState<D>&) {
   SurfaceFittingParameters p;
-  p.C = nonNegative(d, "C", 1e-4);
-  p.maxCurvature = positive(d, "maxCurvature", 0.2);
-  p.minDistance = nonNegative(d, "minDistance", 0.15);
-  p.maxDistance = positive(d, "maxDistance", 0.6);
+  p.C = key::C.read(d);
+  p.maxCurvature = key::maxCurvature.read(d);
+  p.minDistance = key::minDistance.read(d);
+  p.maxDistance = key::maxDistance.read(d);
   if (!(p.maxDistance > p.minDistance)) d.error("maxDistance", "must be greater than minDistance");
-  p.curvatureFactor = positive(d, "curvatureFactor", 0.34);
-  p.smoothingSign = d.getOptionOr("sign", {"smoothing", "asPrinted"}, "smoothing") == "smoothing";
+  p.curvatureFactor = key::curvatureFactor.read(d);
+  p.smoothingSign = key::sign.read(d) == "smoothing";
   return std::make_unique<SurfaceFitting<D>>(p);
 }
 

@@ -8,9 +8,8 @@
 // sign = -1 (`sign smoothing`, default: moves i toward the fitted surface, the
 // stated purpose) or +1 (`sign asPrinted`, eq. 19 literally, which moves an outside
 // particle further out; methods.md 8.3, 14.5). All gates are in units of d0.
-// Reads (system/sphSchemes, shifting/surfaceFitting):
-//   C 1e-4; maxCurvature 0.2; minDistance 0.15; maxDistance 0.6; curvatureFactor 0.34;
-//   sign smoothing|asPrinted;
+// Reads (system/sphSchemes, shifting/surfaceFitting): C, maxCurvature, minDistance, maxDistance,
+// curvatureFactor, sign (smoothing|asPrinted); declared in SurfaceFitting.cpp.
 #pragma once
 #include "effects/Effect.hpp"
 

@@ -4,6 +4,7 @@
 // (docs/method.md 4.3).
 // Reads (constant/physicalProperties): nu (m^2/s), wallCondition noSlip|slip.
 #include "effects/EffectFactories.hpp"
+#include "effects/PhysicalProperties.hpp"
 
 namespace shizuku {
 namespace {
@@ -31,10 +32,9 @@ class Viscosity final : public ForceEffect<D> {
 
 template <int D>
 std::unique_ptr<Effect<D>> makeViscosity(const Dictionary& props, const FlowState<D>&) {
-  const double nu = props.getScalarOr("nu", 0.0, dim::kinematicViscosity);
-  const std::string wall = props.getOptionOr("wallCondition", {"noSlip", "slip"}, "noSlip");
-  if (!(nu > 0)) props.error("nu", "must be > 0 for the viscous term");
-  return std::make_unique<Viscosity<D>>(nu, wall == "noSlip" ? WallVelocity::noSlip : WallVelocity::freeSlip);
+  const PhysicalProperties p = readPhysicalProperties(props);
+  if (!(p.nu > 0)) props.error("nu", "must be > 0 for the viscous term");
+  return std::make_unique<Viscosity<D>>(p.nu, p.walls);
 }
 
 SHIZUKU_EFFECT_FACTORY(makeViscosity);

@@ -1,10 +1,19 @@
 // Volume-conservation shift, eq. (17); formula and sign in VolumeCorrection.hpp.
 #include "effects/VolumeCorrection.hpp"
 #include "effects/EffectFactories.hpp"
-#include "effects/EffectParameters.hpp"
+#include "core/Parameter.hpp"
 #include <cmath>
 
 namespace shizuku {
+
+namespace {
+namespace key {
+const ParameterGroup volume("system/sphSchemes: shifting/volumeCorrection",
+    "Volume-conservation shift of interior particles, eq. 17 (docs/method.md 7).");
+const ScalarParameter C = volume.scalar("C", dim::none, "coefficient C_vol (shift = C h sum ...)").def(0.1).min(0).max(1);
+}  // namespace key
+}  // namespace
+
 
 template <int D>
 std::string VolumeCorrection<D>::describe() const {
@@ -46,7 +55,7 @@ void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& d
 
 template <int D>
 std::unique_ptr<Effect<D>> makeVolumeCorrection(const Dictionary& d, const FlowState<D>&) {
-  return std::make_unique<VolumeCorrection<D>>(nonNegative(d, "C", 0.1));
+  return std::make_unique<VolumeCorrection<D>>(key::C.read(d));
 }
 
 template class VolumeCorrection<2>;

@@ -12,7 +12,7 @@
 // under-density pulled the interior outward and spread it (test_effects_volumeCorrection).
 // <rho> is s.particles.density (computed by the solver at the current positions,
 // self term and walls included); rho0 = s.rho0 (masses calibrated on the lattice).
-// Reads (system/sphSchemes, shifting/volumeCorrection): C 0.1;
+// Reads (system/sphSchemes, shifting/volumeCorrection): C (declared in VolumeCorrection.cpp).
 #pragma once
 #include "effects/Effect.hpp"
 

@@ -1,9 +1,17 @@
 // XSPH advection velocity (methods.md 10); formula in XSPH.hpp.
 #include "effects/XSPH.hpp"
 #include "effects/EffectFactories.hpp"
-#include "effects/EffectParameters.hpp"
+#include "core/Parameter.hpp"
 
 namespace shizuku {
+
+namespace {
+namespace key {
+const ParameterGroup xsph("system/sphSchemes: xsph", "XSPH advection velocity near the free surface (docs/method.md 10).");
+const ScalarParameter epsilon = xsph.scalar("epsilon", dim::none, "XSPH coefficient").def(0.5).min(0).max(1);
+}  // namespace key
+}  // namespace
+
 
 template <int D>
 void XSPH<D>::addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<D>>& u,
@@ -29,9 +37,7 @@ void XSPH<D>::addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<
 
 template <int D>
 std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& d, const FlowState<D>&) {
-  const double eps = nonNegative(d, "epsilon", 0.5);
-  if (eps > 1) d.error("epsilon", "must be <= 1");
-  return std::make_unique<XSPH<D>>(eps);
+  return std::make_unique<XSPH<D>>(key::epsilon.read(d));
 }
 
 template class XSPH<2>;

@@ -3,7 +3,7 @@
 // with u the corrected velocity u^{n+1}. Added to the advection velocity only
 // (r' = r + dt (u + du)); the stored velocity is unchanged. Interior particles
 // and walls get nothing; wall neighbours are not in the sum.
-// Reads (system/sphSchemes, xsph): epsilon 0.5;
+// Reads (system/sphSchemes, xsph): epsilon (declared in XSPH.cpp).
 #pragma once
 #include "effects/Effect.hpp"
 

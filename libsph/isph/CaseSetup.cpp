@@ -1,5 +1,8 @@
 // The set-up of a simulation from its case directory: see CaseSetup.hpp.
 #include "isph/CaseSetup.hpp"
+#include "core/Parameter.hpp"
+#include "effects/PhysicalProperties.hpp"
+#include "kernels/KernelParameters.hpp"
 #include "io/TimeDirectory.hpp"
 #include "io/TimeName.hpp"
 #include "particles/ParticleGenerator.hpp"
@@ -7,41 +10,39 @@
 
 namespace shizuku {
 
+namespace {
+namespace key {
+const ParameterGroup schemes("system/sphSchemes", "The numerical scheme (each effect has a sub-dictionary of its own).");
+const OptionParameter derivatives = schemes.option("derivatives", {"SPH2", "corrected", "standard"},
+    "derivative operators: second-order SPH(2), first-order corrected, or standard (docs/method.md 3)").def("SPH2");
+const IntParameter reorderInterval = schemes.integer("reorderInterval",
+    "steps between cell reorderings of the particles (0: never)").def(20).min(0);
+}  // namespace key
+}  // namespace
+
 template <int D>
 PhysicalConstants<D> CaseSetup<D>::readPhysicalConstants(const CaseFiles& files, FlowState<D>& s) {
-  const Dictionary& props = files.physicalProperties;
+  const PhysicalProperties p = readPhysicalProperties(files.physicalProperties);
+  s.rho0 = p.rho;
   PhysicalConstants<D> c;
-  s.rho0 = props.getScalar("rho", dim::density);
-  if (!(s.rho0 > 0)) props.error("rho", "must be > 0");
-  c.nu = props.getScalarOr("nu", 0.0, dim::kinematicViscosity);
-  if (c.nu < 0) props.error("nu", "must be >= 0");
-  if (files.gravity) c.g = files.gravity->getVector<D>("value", dim::acceleration);
+  c.nu = p.nu;
+  if (files.gravity) c.g = readGravity<D>(*files.gravity);
   return c;
 }
 
 template <int D>
 NumericalScheme<D> CaseSetup<D>::readScheme(const CaseFiles& files, FlowState<D>& s) {
   const Dictionary& sch = files.sphSchemes;
-  KernelType ktype = KernelType::cubicSpline;
-  double ratio = 1.2;
-  if (const Dictionary* k = sch.subDictPtr("kernel")) {
-    ktype = Kernel<D>::kernelTypeFromName(k->getOptionOr("type", {"cubicSpline", "WendlandC2"}, "cubicSpline"));
-    ratio = k->getScalarOr("smoothingLengthRatio", 1.2, dim::none);
-    if (!(ratio > 0.5 && ratio < 3)) k->error("smoothingLengthRatio", "must be between 0.5 and 3");
-  }
+  const KernelParameters kp = KernelParameters::read(sch.subDictPtr("kernel"));
   // The spacing comes from particlesDict (the generator checks it); h = ratio * d0.
-  s.d0 = files.particlesDict.getScalar("spacing", dim::length);
-  if (!(s.d0 > 0)) files.particlesDict.error("spacing", "must be > 0");
-  files.particlesDict.markRead("dimension");
-  s.h = ratio * s.d0;
-  s.kernel = Kernel<D>(ktype, s.h);
+  s.d0 = readSpacing(files.particlesDict);
+  s.h = kp.smoothingLengthRatio * s.d0;
+  s.kernel = Kernel<D>(kp.type, s.h);
   NumericalScheme<D> scheme;
-  scheme.derivatives = DerivativeOperator<D>::create(
-      derivativeSchemeFromName(sch.getOptionOr("derivatives", {"SPH2", "corrected", "standard"}, "SPH2")));
+  scheme.derivatives = DerivativeOperator<D>::create(derivativeSchemeFromName(key::derivatives.read(sch)));
   scheme.freeSurface = std::make_unique<FreeSurfaceDetector<D>>(
       FreeSurfaceParameters::read(sch.subDictPtr("freeSurface"), D));
-  scheme.reorderInterval = sch.getIntOr("reorderInterval", 20);
-  if (scheme.reorderInterval < 0) sch.error("reorderInterval", "must be >= 0 (0: never)");
+  scheme.reorderInterval = key::reorderInterval.read(sch);
   scheme.ppe = std::make_unique<PressureEquation<D>>(LinearSolver::create(files.sphSolution.subDictPtr("pressure")));
   return scheme;
 }

@@ -1,6 +1,7 @@
 // The health checks after each step and the last good state: see HealthGuard.hpp.
 #include "isph/HealthGuard.hpp"
 #include "core/Log.hpp"
+#include "core/Parameter.hpp"
 #include "io/TimeName.hpp"
 #include "io/VtpFile.hpp"
 #include "operators/DensityErrorMeasure.hpp"
@@ -11,16 +12,25 @@ namespace shizuku {
 
 namespace fs = std::filesystem;
 
+namespace {
+namespace key {
+const ParameterGroup health("system/controlDict: healthChecks",
+    "Guards checked after every step: a failure stops the run (exit 2) with the last good state written.");
+const ScalarParameter maxDensityErrorRms = health.scalar("maxDensityErrorRms", dim::none,
+    "largest interior density error rms, % (eq. 22)").def(20).above(0).max(100);
+const ScalarParameter domainMargin = health.scalar("domainMargin", dim::none,
+    "the domain box: the initial extent widened on each side by this, times the extent").def(0.5).min(0).max(1e6);
+const ScalarParameter maxSpeed = health.scalar("maxSpeed", dim::velocity, "largest fluid speed")
+    .def(0).shownDefault("0 (10 x max(initial speed, sqrt(2 g L)))").min(0);
+}  // namespace key
+}  // namespace
+
 template <int D>
 HealthGuard<D>::HealthGuard(const Dictionary& controlDict) {
-  if (const Dictionary* hc = controlDict.subDictPtr("healthChecks")) {
-    limits_.maxDensityErrorRms = hc->getScalarOr("maxDensityErrorRms", 20.0, dim::none);
-    limits_.domainMargin = hc->getScalarOr("domainMargin", 0.5, dim::none);
-    limits_.maxSpeed = hc->getScalarOr("maxSpeed", 0.0, dim::velocity);
-    if (!(limits_.maxSpeed >= 0)) hc->error("maxSpeed", "must be >= 0 (m/s; 0 chooses it from the case)");
-    if (!(limits_.domainMargin >= 0)) hc->error("domainMargin", "must be >= 0 (times the initial extent)");
-    if (!(limits_.maxDensityErrorRms > 0)) hc->error("maxDensityErrorRms", "must be > 0 (%)");
-  }
+  const Dictionary* hc = controlDict.subDictPtr("healthChecks");
+  limits_.maxDensityErrorRms = key::maxDensityErrorRms.read(hc);
+  limits_.domainMargin = key::domainMargin.read(hc);
+  limits_.maxSpeed = key::maxSpeed.read(hc);
 }
 
 template <int D>

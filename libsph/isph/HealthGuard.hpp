@@ -5,9 +5,10 @@
 // The offending particles go to postProcessing/healthChecks/<time>/offending.vtp. It also
 // keeps the last good state (the start of the current step), which the time loop writes
 // after a failure.
-// Reads (system/controlDict, healthChecks): maxDensityErrorRms 20 (%); domainMargin 0.5
-// (times the initial extent, on each side); maxSpeed 0 (m/s; 0: ten times the larger of the
-// fastest initial speed and the free-fall speed sqrt(2 |g| L) over the largest extent L).
+// Reads (system/controlDict, healthChecks): maxDensityErrorRms (%), domainMargin (times the
+// initial extent, on each side), maxSpeed (m/s; 0: ten times the larger of the fastest
+// initial speed and the free-fall speed sqrt(2 |g| L) over the largest extent L); declared
+// in HealthGuard.cpp.
 #pragma once
 #include "core/Dictionary.hpp"
 #include "operators/DensityErrorMeasure.hpp"

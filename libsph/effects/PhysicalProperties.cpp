@@ -1,0 +1,36 @@
+// The declared keys of constant/physicalProperties and constant/g: see PhysicalProperties.hpp.
+#include "effects/PhysicalProperties.hpp"
+#include "core/Parameter.hpp"
+
+namespace shizuku {
+
+namespace {
+namespace key {
+const ParameterGroup properties("constant/physicalProperties", "The fluid's density and viscosity.");
+const ScalarParameter rho = properties.scalar("rho", dim::density, "density").required().above(0);
+const ScalarParameter nu = properties.scalar("nu", dim::kinematicViscosity, "kinematic viscosity (0: no viscous term is built)")
+    .def(0).min(0);
+const OptionParameter wallCondition = properties.option("wallCondition", {"noSlip", "slip"},
+    "what the walls show the viscous term: the no-slip mirror velocity or free slip").def("noSlip");
+const ParameterGroup gravity("constant/g", "Gravity (file absent: no body force is built).");
+const VectorParameter g = gravity.vector("value", dim::acceleration, "gravitational acceleration").required();
+}  // namespace key
+}  // namespace
+
+PhysicalProperties readPhysicalProperties(const Dictionary& d) {
+  PhysicalProperties p;
+  p.rho = key::rho.read(d);
+  p.nu = key::nu.read(d);
+  p.walls = key::wallCondition.read(d) == "noSlip" ? WallVelocity::noSlip : WallVelocity::freeSlip;
+  return p;
+}
+
+template <int D>
+Vec<D> readGravity(const Dictionary& g) {
+  return key::g.read<D>(g);
+}
+
+template Vec<2> readGravity<2>(const Dictionary&);
+template Vec<3> readGravity<3>(const Dictionary&);
+
+}  // namespace shizuku
