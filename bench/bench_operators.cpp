@@ -1,4 +1,4 @@
-// Benchmark of the per-step numerics (methods.md 13 steps 1 and 4): nanoseconds
+// Benchmark of the per-step numerics (docs/method.md 13 steps 1 and 4): nanoseconds
 // per particle for the cell-linked-list neighbour search and for the SPH2
 // weights (FI with fallback chain), at ~10k and ~100k particles, 1 and 2
 // threads, 2D and 3D, on a lattice with +-0.1 d0 random disorder, h = 1.2 d0,

@@ -1,4 +1,4 @@
-// Pressure-solver benchmark (issue 9, item 3): records the PPE systems (A, b and
+// Pressure-solver benchmark: records the PPE systems (A, b and
 // the warm-start guess) that a real run of a case produces, then solves the same
 // sequence with every candidate backend and thread count, timing each solve
 // (wall: best of `passes` passes; CPU: process clock, all threads, mean).

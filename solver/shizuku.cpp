@@ -1,4 +1,4 @@
-// shizuku: the ISPH solver (design.md 1.1).
+// shizuku: the ISPH solver (docs/design.md 1.1).
 //
 //   shizuku -case tutorials/damBreak          run the case
 //   shizuku -case DIR -dryRun                 read and check everything, print the pipeline, exit 0

@@ -1,6 +1,6 @@
 // shizukuParticles: generate the initial particles of a case from
 // system/particlesDict and write them as the start-time directory (0/), without
-// running, so they can be looked at in ParaView before a run (design.md 1.1).
+// running, so they can be looked at in ParaView before a run (docs/design.md 1.1).
 //
 //   shizukuParticles -case tutorials/damBreak
 //

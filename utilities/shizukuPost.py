@@ -1,4 +1,4 @@
-"""What shizukuPlot and shizukuCompare share in reading a case (design.md 1.3): folder
+"""What shizukuPlot and shizukuCompare share in reading a case (docs/design.md 1.3): folder
 names that are times, the walk of postProcessing/<name>/<startTime>/<file>, the rule by
 which a later start time replaces the rows from its start on, and the header and tokens
 of one postProcessing file. Each script turns the tokens into its own numbers:

@@ -1,5 +1,5 @@
 // shizukuPostProcess: run one function object over saved time directories
-// (design.md 1.1, 1.3), writing the files a live run writes.
+// (docs/design.md 1.1, 1.3), writing the files a live run writes.
 //
 //   shizukuPostProcess -case tutorials/damBreak -func densityError
 //   shizukuPostProcess -case DIR -func centre -time 0.1:0.5

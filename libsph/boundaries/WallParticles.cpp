@@ -1,4 +1,4 @@
-// Dummy wall particles: Shepard velocity and the Adami pressure row (methods.md 4.2, 11).
+// Dummy wall particles: Shepard velocity and the Adami pressure row (docs/method.md 4.2, 11).
 #include "boundaries/WallParticles.hpp"
 
 namespace shizuku {

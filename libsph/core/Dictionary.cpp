@@ -1,4 +1,4 @@
-// Lookups in a parsed case dictionary (design.md 1.2): typed getters with
+// Lookups in a parsed case dictionary (docs/design.md 1.2): typed getters with
 // unit/dimension checks, defaults recorded once for the log, "did you mean"
 // errors for options and switches, and checkAllRead(), which turns every
 // keyword nobody looked up into an InputError naming file, line and the

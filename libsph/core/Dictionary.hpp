@@ -1,5 +1,5 @@
 // Reader for case dictionaries: the OpenFOAM-style syntax subset of
-// design.md 1.2 (FoamFile header, comments, entries, sub-dictionaries, lists,
+// docs/design.md 1.2 (FoamFile header, comments, entries, sub-dictionaries, lists,
 // vectors, strings, switches, $macro and $sub/macro, #include,
 // #includeIfPresent, units after numbers and vectors).
 //

@@ -1,5 +1,5 @@
 // "Did you mean" suggestions for misspelt keywords, options, units and macros
-// (design.md 1.2): the candidate with the smallest case-insensitive
+// (docs/design.md 1.2): the candidate with the smallest case-insensitive
 // Damerau-Levenshtein distance (optimal string alignment: insertions,
 // deletions, substitutions and swaps of two neighbouring letters each cost 1),
 // accepted when the distance is at most max(2, length/3). Ties go to the

@@ -1,4 +1,4 @@
-// Parser of case dictionaries (design.md 1.2): turns the text of a file into
+// Parser of case dictionaries (docs/design.md 1.2): turns the text of a file into
 // a Dictionary tree. Handles the FoamFile header, // and /* */ comments,
 // `keyword value(s);`, sub-dictionaries, nested lists, words, numbers,
 // "strings", $macro and $sub/macro expansion, #include and #includeIfPresent,

@@ -1,5 +1,5 @@
 // Printing of physical dimensions (mass, length, time exponents) for the unit
-// checks of the dictionary reader (design.md 1.2): "[m/s^2]", "[kg/m^3]",
+// checks of the dictionary reader (docs/design.md 1.2): "[m/s^2]", "[kg/m^3]",
 // "[Pa]", "[-]", and a named form for error messages ("a velocity [m/s]").
 // Reads no dictionary keys.
 #include "core/Dimension.hpp"

@@ -1,5 +1,5 @@
 // Physical dimensions (mass, length, time exponents) used to check the unit a
-// user writes after a number, e.g. `spacing 1 [cm];` (design.md 1.2).
+// user writes after a number, e.g. `spacing 1 [cm];` (docs/design.md 1.2).
 #pragma once
 #include <string>
 

@@ -1,4 +1,4 @@
-// Run control from system/controlDict (design.md 1.2): reads startFrom, startTime,
+// Run control from system/controlDict (docs/design.md 1.2): reads startFrom, startTime,
 // stopAt, endTime, deltaT, adjustTimeStep, maxCo, maxDeltaT, writeControl,
 // writeInterval, writeFormat, progressInterval (declared in RunControl.cpp);
 // functions { ... } and healthChecks { ... } are read elsewhere.

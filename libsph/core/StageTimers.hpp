@@ -1,4 +1,4 @@
-// Wall-clock timers for the named stages of a time step (design.md part 2:
+// Wall-clock timers for the named stages of a time step (docs/design.md part 2:
 // "each stage is timed by name"). Stages are registered once, in execution
 // order, before the time loop; timing a stage inside the loop allocates nothing.
 #pragma once

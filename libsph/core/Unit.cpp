@@ -1,4 +1,4 @@
-// Units written in square brackets after a number or a list (design.md 1.2):
+// Units written in square brackets after a number or a list (docs/design.md 1.2):
 // parseUnit("g/cm^3") gives the SI factor (1000) and the dimension (kg/m^3).
 // Grammar: factors separated by spaces or '*' multiply, '/' divides by the one
 // factor that follows it (so "m/s/s" = "m/s^2"), '^' takes an integer power,

@@ -17,7 +17,7 @@ using Index = std::int32_t;
 // What a particle is.
 enum class ParticleType : std::uint8_t { fluid = 0, wall = 1 };
 
-// Free-surface class of a fluid particle (methods.md 5.2). Wall particles are `interior`.
+// Free-surface class of a fluid particle (docs/method.md 5.2). Wall particles are `interior`.
 enum class SurfaceClass : std::uint8_t { interior = 0, vicinity = 1, free = 2, splash = 3 };
 
 inline const char* surfaceClassName(SurfaceClass c) {
@@ -34,7 +34,7 @@ inline bool nearSurface(SurfaceClass c) {
   return c == SurfaceClass::free || c == SurfaceClass::vicinity || c == SurfaceClass::splash;
 }
 
-// Bad input: exit status 1 (design.md 1.1). `what()` is the whole message,
+// Bad input: exit status 1 (docs/design.md 1.1). `what()` is the whole message,
 // already naming file, line and keyword where known.
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;

@@ -1,4 +1,4 @@
-// Advective dynamic stabilization (methods.md 9); formula in ADS.hpp.
+// Advective dynamic stabilization (docs/method.md 9); formula in ADS.hpp.
 #include "effects/ADS.hpp"
 #include "effects/EffectFactories.hpp"
 #include "core/Parameter.hpp"

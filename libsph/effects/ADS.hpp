@@ -1,16 +1,16 @@
-// Advective dynamic stabilization (ADS, methods.md 9; Tsuruta, Khayyer & Gotoh 2023,
+// Advective dynamic stabilization (ADS, docs/method.md 9; Tsuruta, Khayyer & Gotoh 2023,
 // reconstructed there): after advection, particles near the free surface that are
 // closer than d_ADS to a neighbour are moved apart:
 //   dr_i = C sum_{j : |r_ij| < d_ADS} omega_ij (d_ADS - |r_ij|) e_ij,  e_ij = r_ij / |r_ij|,
 // for fluid i in free, splash or vicinity; j any neighbour (fluid or wall).
 // omega_ij = m_j / (m_i + m_j) = 1/2 when j is moved by ADS too (equal masses), and
-// omega_ij = 1 when j is not moved (a wall, as in methods.md 9, and, by the same
+// omega_ij = 1 when j is not moved (a wall, as in docs/method.md 9, and, by the same
 // rule, an interior fluid particle) so the pair recovers d_ADS either way.
 // Jacobi: all dr_i are computed from one configuration, then applied. Walls are
 // never moved; velocities are not changed (advective correction only). The
 // solver refreshes the pair geometry afterwards.
-// Options (methods.md 9 leaves them open):
-//   partners surface  (default so far) only near-surface particles move; an interior
+// Options (docs/method.md 9 leaves them open):
+//   partners surface  (default) only near-surface particles move; an interior
 //                     fluid partner or a wall stays and i takes the whole correction;
 //   partners pair     both fluid partners of a pair with a near-surface particle move by
 //                     half (the pair's centroid stays: no outward push of the surface);

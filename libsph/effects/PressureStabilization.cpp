@@ -1,4 +1,4 @@
-// Stabilized ISPH (Asai et al. 2012), eq. (9), methods.md 4.1: the PPE source
+// Stabilized ISPH (Asai et al. 2012), eq. (9), docs/method.md 4.1: the PPE source
 // gains alpha (rho - <rho>_i) / dt^2 on interior and vicinity rows.
 // Reads (system/sphSchemes, pressureStabilization): type densityInvariant, alpha (both required).
 #include "core/Parameter.hpp"

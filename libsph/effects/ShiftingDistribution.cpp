@@ -1,5 +1,5 @@
 // OPS (eqs. 11-13) and DPS (eq. 14) distribution shifts; formulas, signs and
-// keys in ShiftingDistribution.hpp (methods.md 6, 7).
+// keys in ShiftingDistribution.hpp (docs/method.md 6, 7).
 #include "effects/ShiftingDistribution.hpp"
 #include "effects/EffectFactories.hpp"
 #include "core/Parameter.hpp"

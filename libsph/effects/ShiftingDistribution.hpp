@@ -1,18 +1,18 @@
 // Particle-distribution shift (the dispersion term of eq. 10):
 //
-// OPS, eqs. (11)-(13) (methods.md 6):
+// OPS, eqs. (11)-(13) (docs/method.md 6):
 //   gradC_i  = sum_{j in S_i} V [1 + Rp (W_ij / W(d0))^np] G_ij      (fluid and wall j)
 //   dr_ps    = -C h^2 gradC_i
 //   dr_dis   = dr_ps (interior),  (I - n_i n_i) dr_ps (free, splash, vicinity)
-// with n_i the detector's normal (methods.md 5.3, the concentration-gradient normal).
+// with n_i the detector's normal (docs/method.md 5.3, the concentration-gradient normal).
 // Vicinity particles whose support does not reach past the surface, |sum_j V grad W_ij| h
 // < projectionThreshold, have no defined normal (it pointed inward on the rotating patch,
 // breaking its symmetry) and are shifted like interior ones. Measured (docs/shifting.md):
-// with the fitted normals of the surface fit (methods.md 5.3's recommendation) the dam
+// with the fitted normals of the surface fit (docs/method.md 5.3's recommendation) the dam
 // break's interior density error at t = 0.5 s was twice as large.
 // Sign: grad_i W_ij = W'(r) r_ij / r points from i toward j (W' < 0), so gradC_i points
 // toward denser regions and -C h^2 gradC_i moves i toward sparser ones. W(d0) is the
-// kernel at distance d0 (methods.md 2, 14.2). `gradient` chooses G_ij:
+// kernel at distance d0 (docs/method.md 2, 14.2). `gradient` chooses G_ij:
 //   kernel (default): the plain kernel gradient grad_i W_ij (Lind et al. 2012).
 //   corrected: the SPH(2) weights s.weights.gradW in the same non-difference sum, as the
 //     seed writes. Measured UNSTABLE (docs/shifting.md): a corrected gradient is exact
@@ -23,7 +23,7 @@
 //     difference form, sum V (C_j - C_i) gradW_ij, plus the anti-clumping part
 //     Rp sum V (W_ij/W(d0))^np grad_i W_ij with the kernel gradient (a pair repulsion).
 //
-// DPS, eq. (14) with the missing length factor C h (methods.md 7, 14.3):
+// DPS, eq. (14) with the missing length factor C h (docs/method.md 7, 14.3):
 //   dr_dis = C h sum_{j in S*_i} V W_ij e_ij,  e_ij = r_ij / |r_ij|, |r_ij| < 1.1 sqrt(D) d0
 // (short-range repulsion; fluid and wall j). The same tangential projection as OPS is
 // applied on free, splash and vicinity particles so that neither type pushes particles

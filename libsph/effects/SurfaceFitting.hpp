@@ -1,4 +1,4 @@
-// Surface-fitting shift, eq. (19) with the gates of the seed (methods.md 8.1, 8.3):
+// Surface-fitting shift, eq. (19) with the gates of the paper (docs/method.md 8.1, 8.3):
 //   dr_suf_i = sign * C h s_i n_i   for free-surface particles i (free, splash) with
 //   0 < |kappa_i d0| < maxCurvature  and  minDistance < |s_i| < maxDistance,
 // s_i = signed distance to the leave-one-out fitted line/plane in units of d0
@@ -7,7 +7,7 @@
 // gate uses the factor the user chose, whatever factor the solver's fit used).
 // sign = -1 (`sign smoothing`, default: moves i toward the fitted surface, the
 // stated purpose) or +1 (`sign asPrinted`, eq. 19 literally, which moves an outside
-// particle further out; methods.md 8.3, 14.5). All gates are in units of d0.
+// particle further out; docs/method.md 8.3, 14.5). All gates are in units of d0.
 // Reads (system/sphSchemes, shifting/surfaceFitting): C, maxCurvature, minDistance, maxDistance,
 // curvatureFactor, sign (smoothing|asPrinted); declared in SurfaceFitting.cpp.
 #pragma once

@@ -42,7 +42,7 @@ void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& d
       // A neighbour's own density counts only when its kernel sum is whole: a wall, or a
       // fluid particle near the surface (its sum truncated by the missing outside),
       // contributes zero, or the kernel deficit would read as under-density and pull
-      // the interior outward (methods.md 7, implementation notes).
+      // the interior outward (docs/method.md 7, implementation notes).
       const bool whole = s.isFluid(j) && s.surfaceClass(j) == SurfaceClass::interior;
       const double ej = whole ? rho[j] * invRho0 - 1.0 : 0.0;
       sum += ((ei + ej) / r) * nl.rij[k];

@@ -1,8 +1,8 @@
 // Volume-conservation shift, eq. (17) with the summation density of eq. (18)
-// (methods.md 7):
+// (docs/method.md 7):
 //   dr_vol_i = C h sum_{j in S*_i} (<rho>_i/rho0 - 1 + <rho>_j/rho0 - 1) e_ij,   i interior fluid,
 //   S*_i = {j != i : |r_ij| < 1.1 sqrt(D) d0},   e_ij = (r_i - r_j) / |r_i - r_j| (from j to i).
-// Sign (checked, methods.md 14.4): with e_ij from j to i an under-dense pair
+// Sign (checked, docs/method.md 14.4): with e_ij from j to i an under-dense pair
 // (negative bracket) moves i toward j, so an expanded region contracts and a
 // compressed one expands; the opposite sign would be anti-conservative.
 // Wall neighbours are in S*_i with their own term set to zero (<rho>_w := rho0) so

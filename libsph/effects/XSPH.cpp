@@ -1,4 +1,4 @@
-// XSPH advection velocity (methods.md 10); formula in XSPH.hpp.
+// XSPH advection velocity (docs/method.md 10); formula in XSPH.hpp.
 #include "effects/XSPH.hpp"
 #include "effects/EffectFactories.hpp"
 #include "core/Parameter.hpp"

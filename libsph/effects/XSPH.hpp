@@ -1,4 +1,4 @@
-// XSPH advection velocity near the free surface (Monaghan 1992; methods.md 10):
+// XSPH advection velocity near the free surface (Monaghan 1992; docs/method.md 10):
 //   du_i = epsilon sum_{fluid j in S_i} V (u_j - u_i) W_ij,   i fluid in free, splash or vicinity,
 // with u the corrected velocity u^{n+1}. Added to the advection velocity only
 // (r' = r + dt (u + du)); the stored velocity is unchanged. Interior particles

@@ -1,4 +1,4 @@
-// Function object `conservation`: see Conservation.hpp (design.md 1.3).
+// Function object `conservation`: see Conservation.hpp (docs/design.md 1.3).
 #include "functionObjects/Conservation.hpp"
 
 namespace shizuku {

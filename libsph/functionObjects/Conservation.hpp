@@ -1,4 +1,4 @@
-// Function object `conservation` (design.md 1.3): global balances of the fluid
+// Function object `conservation` (docs/design.md 1.3): global balances of the fluid
 // particles (walls excluded), from the flow state at time t:
 //   volume         = sum_i m / <rho>_i            (eq. 18 density; m^2 per unit depth in 2D)
 //   nominalVolume  = N_fluid m / rho0            (constant unless particles are lost)

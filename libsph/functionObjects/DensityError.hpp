@@ -1,7 +1,7 @@
-// Function object `densityError` (design.md 1.3): the density error of eq. (22),
+// Function object `densityError` (docs/design.md 1.3): the density error of eq. (22),
 //   e_i = (rho0 - <rho>_i) / rho0 x 100 %,   <rho>_i the summation density (eq. 18),
 // over two sets of fluid particles: the interior ones (free-surface class
-// `interior`, methods.md 5.2) and all fluid particles (walls never count).
+// `interior`, docs/method.md 5.2) and all fluid particles (walls never count).
 // Statistics per set: mean e, rms = sqrt(mean e^2), max |e|, and mode = centre
 // of the fullest bin of the histogram (ties: the lowest such bin; nan when no
 // value falls inside [min, max]).

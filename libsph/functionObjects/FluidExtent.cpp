@@ -1,4 +1,4 @@
-// Function object `fluidExtent`: see FluidExtent.hpp (design.md 1.3).
+// Function object `fluidExtent`: see FluidExtent.hpp (docs/design.md 1.3).
 #include "functionObjects/FluidExtent.hpp"
 #include "core/BlockReduce.hpp"
 #include <limits>

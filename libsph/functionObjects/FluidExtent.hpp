@@ -1,4 +1,4 @@
-// Function object `fluidExtent` (design.md 1.3): the bounding box of the fluid
+// Function object `fluidExtent` (docs/design.md 1.3): the bounding box of the fluid
 // particle positions at time t (walls excluded; periodic positions as stored).
 // File extent.dat: time, min (x y[ z]), max (x y[ z]) in m. With no fluid
 // particle both are nan.

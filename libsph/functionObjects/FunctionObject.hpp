@@ -1,4 +1,4 @@
-// Function objects (design.md 1.3): run-time measurements listed in the
+// Function objects (docs/design.md 1.3): run-time measurements listed in the
 // controlDict `functions { <name> { type <type>; writeControl ...; writeInterval ...; ... } }`,
 // each built only when listed, each writing postProcessing/<name>/<startTime>/<file>.
 // The same objects run over saved time directories in shizukuPostProcess, so a

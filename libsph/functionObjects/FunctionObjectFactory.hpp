@@ -1,4 +1,4 @@
-// Building one function object by type name (design.md 1.3), for the list
+// Building one function object by type name (docs/design.md 1.3), for the list
 // factory createFunctionObjects() and for shizukuPostProcess (which may name a
 // type with default settings instead of an entry of the controlDict).
 // Types: probes densityError conservation fluidExtent timing.

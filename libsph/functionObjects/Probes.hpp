@@ -1,4 +1,4 @@
-// Function object `probes` (design.md 1.3): values of particle fields at fixed
+// Function object `probes` (docs/design.md 1.3): values of particle fields at fixed
 // points by Shepard-normalised SPH interpolation over the fluid particles:
 //   f(x) = sum_j V f_j W(|x - x_j|) / sum_j V W(|x - x_j|),   V = m / rho0,
 // j over fluid particles within the support 2h of x (walls never count).

@@ -1,4 +1,4 @@
-// When a function object samples (design.md 1.3): its own
+// When a function object samples (docs/design.md 1.3): its own
 //   writeControl  timeStep | runTime | adjustableRunTime | writeTime;
 //   writeInterval N (steps, timeStep) | seconds (runTime, adjustableRunTime);
 // (defaults and ranges declared in SampleControl.cpp)

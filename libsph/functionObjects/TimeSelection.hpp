@@ -1,5 +1,5 @@
 // Selecting saved time directories on a command line (shizukuPostProcess,
-// design.md 1.1), e.g. `-time 0.1,0.2`, `-time 0.1:0.5`, `-time latestTime`:
+// docs/design.md 1.1), e.g. `-time 0.1,0.2`, `-time 0.1:0.5`, `-time latestTime`:
 // comma-separated items, each
 //   a number      the saved time equal to it (relative tolerance 1e-9) or named so;
 //   a:b a: :b     every saved time t with a <= t <= b (bounds optional, tolerance 1e-9);

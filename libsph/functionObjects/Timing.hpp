@@ -1,4 +1,4 @@
-// Function object `timing` (design.md 1.3, part 2 "each stage is timed by
+// Function object `timing` (docs/design.md 1.3, part 2 "each stage is timed by
 // name"): wall-clock seconds spent in each stage of the step since the
 // previous sample (differences of the solver's StageTimers totals, so nothing
 // shared is reset), then the throughput over the same interval:

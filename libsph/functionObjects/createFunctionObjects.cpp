@@ -1,4 +1,4 @@
-// The function-object factory (design.md 1.3): one object per entry of the
+// The function-object factory (docs/design.md 1.3): one object per entry of the
 // controlDict `functions { <name> { type <type>; ... } }`, built only when listed.
 // Reads (controlDict): functions { <name> { type probes|densityError|conservation|fluidExtent|timing; ... } }
 #include "core/Parameter.hpp"

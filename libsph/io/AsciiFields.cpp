@@ -1,4 +1,4 @@
-// ascii field files: see AsciiFields.hpp (design.md 1.3).
+// ascii field files: see AsciiFields.hpp (docs/design.md 1.3).
 #include "io/AsciiFields.hpp"
 #include "io/FieldInfo.hpp"
 #include "io/FileOps.hpp"

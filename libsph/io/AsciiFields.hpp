@@ -1,4 +1,4 @@
-// writeFormat ascii (design.md 1.3): one plain-text file per particle field in
+// writeFormat ascii (docs/design.md 1.3): one plain-text file per particle field in
 // the time directory, named after the field ("position", "U", "p", "rhoN",
 // "type", "surface", "id", and "normal", "shift" when present). Each starts
 // with '#' lines (field, unit, time, particle count, columns), then one line

@@ -1,5 +1,5 @@
 // Units and descriptions of the particle fields as written to disk
-// (design.md 1.3; names from ParticleSet::forEachField). Used by the ascii
+// (docs/design.md 1.3; names from ParticleSet::forEachField). Used by the ascii
 // writer's headers and by docs/output.md. Dictionary keys read: none.
 #pragma once
 #include <string>

@@ -1,4 +1,4 @@
-// Crash-safe file-system steps: see FileOps.hpp (design.md 1.3).
+// Crash-safe file-system steps: see FileOps.hpp (docs/design.md 1.3).
 #include "io/FileOps.hpp"
 #include <cerrno>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// File-system steps of crash-safe output (design.md 1.3: a crash never leaves
+// File-system steps of crash-safe output (docs/design.md 1.3: a crash never leaves
 // a half-written time directory): create folders, write and fsync files, fsync
 // folders, rename or atomically exchange paths, remove trees. Every failure
 // throws std::runtime_error naming the operation, the path and strerror.

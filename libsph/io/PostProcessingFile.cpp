@@ -1,4 +1,4 @@
-// Function-object output file: see PostProcessingFile.hpp (design.md 1.3).
+// Function-object output file: see PostProcessingFile.hpp (docs/design.md 1.3).
 #include "io/PostProcessingFile.hpp"
 #include "io/FileOps.hpp"
 #include <algorithm>

@@ -1,4 +1,4 @@
-// One function-object output file (design.md 1.3):
+// One function-object output file (docs/design.md 1.3):
 //   <case>/postProcessing/<name>/<startTimeName>/<fileName>
 // Folders are created as needed; `#` header lines name the columns and their
 // units; then one whitespace-separated row per sample, time first, each row

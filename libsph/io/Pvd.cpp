@@ -1,4 +1,4 @@
-// <case>/particles.pvd (design.md 1.3): the VTK "Collection" file listing
+// <case>/particles.pvd (docs/design.md 1.3): the VTK "Collection" file listing
 // every complete time directory with its time, so ParaView opens the series:
 //   <DataSet timestep="0.1" group="" part="0" file="0.1/particles.vtp"/>
 // Rewritten through a temporary file and a rename, so it is always whole.

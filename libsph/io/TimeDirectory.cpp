@@ -1,5 +1,5 @@
 // Atomic time-directory write, exact read, listing: see TimeDirectory.hpp
-// (design.md 1.3).
+// (docs/design.md 1.3).
 #include "io/TimeDirectory.hpp"
 #include "io/AsciiFields.hpp"
 #include "io/FileOps.hpp"

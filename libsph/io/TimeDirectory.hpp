@@ -1,4 +1,4 @@
-// Time directories: what a run writes and a restart reads (design.md 1.2, 1.3).
+// Time directories: what a run writes and a restart reads (docs/design.md 1.2, 1.3).
 //
 //   <case>/<time>/particles.vtp   every particle field (VtpFile.hpp)
 //   <case>/<time>/uniform/time    time, step index, dt state (TimeFile.hpp)

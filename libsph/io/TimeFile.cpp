@@ -1,4 +1,4 @@
-// uniform/time writer and reader: see TimeFile.hpp (design.md 1.3).
+// uniform/time writer and reader: see TimeFile.hpp (docs/design.md 1.3).
 #include "io/TimeFile.hpp"
 #include "io/TimeName.hpp"
 #include <cctype>

@@ -1,5 +1,5 @@
-// <time>/uniform/time: the time state of a time directory (design.md 1.3),
-// in the case-dictionary syntax (design.md 1.2), e.g.
+// <time>/uniform/time: the time state of a time directory (docs/design.md 1.3),
+// in the case-dictionary syntax (docs/design.md 1.2), e.g.
 //   value    0.1;       // s, exact (shortest text that reads back bit for bit)
 //   name     "0.1";     // the directory name
 //   index    1000;      // time-step index

@@ -1,4 +1,4 @@
-// Time directory names and exact number text: see TimeName.hpp (design.md 1.3).
+// Time directory names and exact number text: see TimeName.hpp (docs/design.md 1.3).
 #include "io/TimeName.hpp"
 #include <charconv>
 #include <cmath>

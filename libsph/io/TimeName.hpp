@@ -1,4 +1,4 @@
-// Names of time directories (design.md 1.2, 1.3) and exact number text.
+// Names of time directories (docs/design.md 1.2, 1.3) and exact number text.
 //
 // timeName(t, p) is t in the C "%g" general format with p significant digits
 // (default 8), trailing zeros removed: 0 -> "0", 0.1 -> "0.1", 1e-4 -> "0.0001",

@@ -1,4 +1,4 @@
-// particles.vtp writer and exact reader: see VtpFile.hpp (design.md 1.3).
+// particles.vtp writer and exact reader: see VtpFile.hpp (docs/design.md 1.3).
 #include "io/VtpFile.hpp"
 #include "io/FileOps.hpp"
 #include <cerrno>

@@ -1,4 +1,4 @@
-// One particles.vtp file (design.md 1.3): VTK XML PolyData, Float64, binary
+// One particles.vtp file (docs/design.md 1.3): VTK XML PolyData, Float64, binary
 // (appended raw data, no compression, 64-bit headers), read back bit for bit.
 // Points: positions (z = 0 in 2D); one vertex cell per particle so ParaView
 // draws points; point data: every non-empty field of ParticleSet::forEachField

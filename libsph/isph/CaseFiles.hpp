@@ -1,4 +1,4 @@
-// The dictionaries of a case directory (design.md 1.2), parsed once:
+// The dictionaries of a case directory (docs/design.md 1.2), parsed once:
 // system/{controlDict, sphSchemes, sphSolution, particlesDict},
 // constant/physicalProperties and the optional constant/g.
 #pragma once

@@ -1,4 +1,4 @@
-// Kernel normalisations and lattice sums (methods.md section 2).
+// Kernel normalisations and lattice sums (docs/method.md section 2).
 // The kernel values themselves are inline in Kernel.hpp (hot loops).
 // Reads no dictionary keys (kernel names and settings: KernelParameters.cpp).
 #include "kernels/Kernel.hpp"

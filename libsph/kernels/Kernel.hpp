@@ -1,11 +1,11 @@
-// Smoothing kernels with support 2h (methods.md section 2): cubic B-spline
+// Smoothing kernels with support 2h (docs/method.md section 2): cubic B-spline
 // (default) and Wendland C2, in D = 2 or 3 dimensions, with q = r/h:
 //   cubic spline: w = s [1 - 1.5q^2 + 0.75q^3] (q<1), s 0.25 (2-q)^3 (1<=q<2), 0 else;
 //                 s = 10/(7 pi h^2) (2D), 1/(pi h^3) (3D)
 //   Wendland C2:  w = s (1-q/2)^4 (2q+1) (q<2);  s = 7/(4 pi h^2) (2D), 21/(16 pi h^3) (3D)
 // latticeSum(d0) is the Shepard sum over an infinite square/cubic lattice
 // including the self term, used to calibrate the particle mass
-// m = rho0 / latticeSum(d0) (methods.md 2, option (b)).
+// m = rho0 / latticeSum(d0) (docs/method.md 2, option (b)).
 // Reads (system/sphSchemes): kernel { type cubicSpline|WendlandC2; smoothingLengthRatio 1.2; }
 // (the dictionary itself is read by the solver; kernelTypeFromName maps `type`).
 #pragma once
@@ -68,7 +68,7 @@ class Kernel {
     }
   }
   // grad_i W_ij = dW/dr * r_ij / r with r_ij = r_i - r_j; since dW/dr <= 0 it
-  // points from i toward j (methods.md 0).
+  // points from i toward j (docs/method.md 0).
   Vec<D> gradW(const Vec<D>& rij, double r) const {
     return r > 0 ? Vec<D>(dwdr(r) / r * rij) : Vec<D>::Zero();
   }

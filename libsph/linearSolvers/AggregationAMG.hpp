@@ -1,5 +1,5 @@
 // Smoothed-aggregation algebraic multigrid preconditioner for the PPE
-// (methods.md 4.2), OpenMP-parallel in every per-cycle
+// (docs/method.md 4.2), OpenMP-parallel in every per-cycle
 // operation, no external library. One V-cycle per application:
 //   setup (every `reuse` steps, or when the numbering or size changes, or when
 //   the iteration count grew past 1.5x (+2) the count right after a setup):

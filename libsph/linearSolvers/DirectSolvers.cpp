@@ -1,4 +1,4 @@
-// Direct sparse LU backends for the PPE (methods.md 4.2: "a direct SparseLU or
+// Direct sparse LU backends for the PPE (docs/method.md 4.2: "a direct SparseLU or
 // UMFPACK is also cheap and the most robust" at 2D test sizes).
 // KLU and UMFPACK are called through their C interfaces: the row-major (CSR)
 // matrix A is, read as compressed columns, the matrix A^T, which they factor;

@@ -1,4 +1,4 @@
-// Algebraic multigrid preconditioner for the PPE (methods.md 4.2):
+// Algebraic multigrid preconditioner for the PPE (docs/method.md 4.2):
 // one BoomerAMG V-cycle of hypre (Debian libhypre-dev) per application, inside
 // the OpenMP BiCGSTAB of Krylov.cpp. Settings are hypre's recommendations for
 // Poisson-like non-symmetric 2D/3D matrices: HMIS coarsening, extended+i

@@ -1,4 +1,4 @@
-// The BiCGSTAB backend (methods.md 4.2): warm-started OpenMP BiCGSTAB (Krylov.cpp)
+// The BiCGSTAB backend (docs/method.md 4.2): warm-started OpenMP BiCGSTAB (Krylov.cpp)
 // with a configurable preconditioner; converged when the true relative residual
 // meets the tolerance (or the ~1e-10 round-off floor of these matrices when a
 // tighter one was asked for). When the recursive residual converged but the true

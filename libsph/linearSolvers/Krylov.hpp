@@ -1,5 +1,5 @@
 // Right-preconditioned BiCGSTAB (van der Vorst 1992) for the pressure Poisson
-// equation (methods.md 4.2), OpenMP-parallel in every matrix-vector product,
+// equation (docs/method.md 4.2), OpenMP-parallel in every matrix-vector product,
 // dot product and vector update, with the products fused with the reductions
 // that follow them. The work vectors live in a KrylovWorkspace that keeps its
 // capacity between time steps: a solve allocates nothing once it has run at the

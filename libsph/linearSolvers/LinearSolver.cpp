@@ -1,5 +1,5 @@
 // The linear-solver factory: reads the `pressure` sub-dictionary of
-// system/sphSolution (design.md part 2, methods.md 4.2) and builds a backend:
+// system/sphSolution (docs/design.md part 2, docs/method.md 4.2) and builds a backend:
 // solver BiCGSTAB|UMFPACK|KLU|SparseLU; BiCGSTAB: tolerance, maxIterations,
 // preconditioner AMG|ILU0|ILUT|diagonal|hypreAMG with amgReuse (AMG, hypreAMG),
 // blocks (ILU0), dropTolerance and fillFactor (ILUT); reuseSymbolic (KLU, UMFPACK).
@@ -38,7 +38,7 @@ namespace {
 
 namespace key {
 
-const ParameterGroup pressure("system/sphSolution: pressure", "Pressure Poisson equation solver (methods 4.2).");
+const ParameterGroup pressure("system/sphSolution: pressure", "Pressure Poisson equation solver (docs/method.md 4.2).");
 const OptionParameter solver = pressure.option("solver", LinearSolver::names(),
     "BiCGSTAB (warm-started, falls back to LU) or a direct LU").def("BiCGSTAB");
 const ScalarParameter tolerance = pressure.scalar("tolerance", dim::none,

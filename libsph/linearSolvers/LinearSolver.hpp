@@ -1,6 +1,6 @@
 // The pressure solver's interface: LinearSolver (solve A x = b) and its factory
 // LinearSolver::create, which reads the `pressure` sub-dictionary of system/sphSolution
-// (design.md part 2, methods.md 4.2):
+// (docs/design.md part 2, docs/method.md 4.2):
 //   pressure { solver BiCGSTAB|UMFPACK|KLU|SparseLU; tolerance 1e-8; maxIterations 2000;
 //              preconditioner AMG|ILU0|ILUT|diagonal|hypreAMG; amgReuse 10; blocks 0;
 //              dropTolerance 1e-4; fillFactor 10; reuseSymbolic yes; }

@@ -1,4 +1,4 @@
-// Preconditioners for the pressure Poisson equation (methods.md 4.2, "BiCGSTAB
+// Preconditioners for the pressure Poisson equation (docs/method.md 4.2, "BiCGSTAB
 // with ILU(0) / ILUT preconditioning"), applied by the OpenMP BiCGSTAB of
 // Krylov.hpp. setup() is called once per time step with that step's matrix and
 // keeps its buffers between steps (no allocation once they have their capacity):

@@ -1,11 +1,11 @@
 // Scheme names, the factory behind DerivativeOperator, and the three schemes
-// (methods.md 3). Reads (system/sphSchemes): derivatives SPH2|corrected|standard
+// (docs/method.md 3). Reads (system/sphSchemes): derivatives SPH2|corrected|standard
 // (the solver passes the word to derivativeSchemeFromName).
 //
-// The three schemes are one per-particle fallback chain (methods.md 3.4), each
+// The three schemes are one per-particle fallback chain (docs/method.md 3.4), each
 // entered at a different top; every row keeps the first link it passes and
 // records it in order[i]:
-//   FI (SPH2 only): the full-inverse model of methods.md 3.2 (5x5 in 2D, 9x9 in
+//   FI (SPH2 only): the full-inverse model of docs/method.md 3.2 (5x5 in 2D, 9x9 in
 //       3D, scaled by h), if n >= 6 (2D) / 12 (3D) neighbours and rcond(M) > 1e-4;
 //   first order (SPH2, corrected): kernel gradient correction tilde gradW =
 //       L_i gradW, L_i = (V sum_j gradW (x) r_ji)^-1, and the renormalised

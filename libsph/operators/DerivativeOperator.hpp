@@ -1,4 +1,4 @@
-// Derivative operators behind one interface (methods.md section 3), chosen by
+// Derivative operators behind one interface (docs/method.md section 3), chosen by
 // `derivatives SPH2|corrected|standard` in system/sphSchemes.
 //
 // Every operator is a weighted sum of differences over the neighbour list,
@@ -32,7 +32,7 @@ struct PairWeights {
   std::vector<std::uint8_t> order; // per particle: 2 = FI, 1 = first order, 0 = standard, 255 = none
 };
 
-// Fallback chain of SPH2 (methods.md 3.4), per particle: FI if the particle has
+// Fallback chain of SPH2 (docs/method.md 3.4), per particle: FI if the particle has
 // at least minNeighboursFI neighbours and rcond(M) > minRcondFI, else first
 // order if at least minNeighboursFirstOrder neighbours and rcond(A) >
 // minRcondFirstOrder, else standard. `corrected` uses the first-order test.
@@ -51,12 +51,12 @@ class DerivativeOperator {
   virtual ~DerivativeOperator() = default;
   virtual DerivativeScheme scheme() const = 0;
   // Fill `out` for every particle i with computeFor[i] != 0 (other particles get zero
-  // gradient and Laplacian weights, order 255, and keep the kernel values w already stored). computeFor[i] == 2 marks a free-surface row: SPH2
-  // starts its fallback chain there at first order; 3 marks a splash row (an isolated
-  // particle): standard weights, because a correction matrix built from the one to three
-  // neighbours of a droplet amplifies the noise of their pressures (a droplet touching a
-  // wall was kicked from 3.9 to 18 m/s in one step by a first-order gradient). V = particle volume (uniform).
-  // Parallel over particles.
+  // gradient and Laplacian weights, order 255, and keep the kernel values w already
+  // stored). computeFor[i] == 2 marks a free-surface row: SPH2 starts its fallback chain
+  // there at first order; 3 marks a splash row (an isolated particle): standard weights,
+  // because a correction matrix built from the one to three neighbours of a droplet
+  // amplifies the noise of their pressures (docs/solver.md, the weights stage).
+  // V = particle volume (uniform). Parallel over particles.
   virtual void computeWeights(const Kernel<D>& kernel, double V, const NeighbourList<D>& nl,
                               const std::vector<std::uint8_t>& computeFor, PairWeights<D>& out) const = 0;
   static std::unique_ptr<DerivativeOperator> create(DerivativeScheme s);

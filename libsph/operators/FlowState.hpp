@@ -1,4 +1,4 @@
-// Everything a stage of the ISPH step reads or writes (methods.md 13): the
+// Everything a stage of the ISPH step reads or writes (docs/method.md 13): the
 // particles, the neighbour list and per-pair weights of this step, the
 // physical constants and the per-step derived fields. Effects receive it;
 // arrays that only an effect needs belong to that effect, not here.
@@ -28,12 +28,12 @@ struct FlowState {
   long step = 0;
 
   // per-step derived fields (sized once, reused every step)
-  std::vector<double> divR;              // -sum V r_ij . gradW_ij (free-surface indicator, methods 5.1)
-  std::vector<Vec<D>> gradC;             // kernel-sum gradient, inward (normals, methods 5.3)
+  std::vector<double> divR;              // -sum V r_ij . gradW_ij (free-surface indicator, docs/method.md 5.1)
+  std::vector<Vec<D>> gradC;             // kernel-sum gradient, inward (normals, docs/method.md 5.3)
   std::vector<Vec<D>> uStar;             // predicted velocity u* (fluid), Shepard-interpolated (walls)
   std::vector<Vec<D>> acceleration;      // body and viscous forces per unit mass of the predictor
 
-  // surface fit (methods.md 8.2), allocated only when an effect needs it. particles.normal
+  // surface fit (docs/method.md 8.2), allocated only when an effect needs it. particles.normal
   // keeps the detector's normal (OPS projects with it); the fit's normal is apart.
   std::vector<Vec<D>> fitNormal;         // fitted outward normal, the detector's where not fitted
   std::vector<double> fitDistance;       // signed distance s_i / d0 (positive outside), NaN where not fitted

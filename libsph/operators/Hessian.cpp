@@ -1,5 +1,5 @@
 // Full Hessian of a scalar field at one particle by the FI system of
-// methods.md 3.2: X = M_i^-1 sum_j V (f_j - f_i) Phi_ij with the scaled basis of
+// docs/method.md 3.2: X = M_i^-1 sum_j V (f_j - f_i) Phi_ij with the scaled basis of
 // WeightRows.hpp; H_aa = X[D+a]/h^2, H_ab = X[mixed]/h^2. For tests and
 // diagnostics (not per step); entries are NaN/inf if M_i is singular.
 // Reads no dictionary keys.

@@ -1,8 +1,8 @@
 // Per-particle ("row") building blocks of the derivative weights, shared by the
-// SPH2, corrected and standard operators (methods.md 3.2, 3.4, 3.5). Internal
+// SPH2, corrected and standard operators (docs/method.md 3.2, 3.4, 3.5). Internal
 // header of libsph/operators.
 //
-// Notation (methods.md 0): r_ij = r_i - r_j, r_ji = -r_ij, gradW_ij = w'(r) r_ij / r
+// Notation (docs/method.md 0): r_ij = r_i - r_j, r_ji = -r_ij, gradW_ij = w'(r) r_ij / r
 // = c r_ji with c = -w'(r)/r >= 0.
 // FI (3.2), scaled by h: s = r_ji / h, rho = r / h,
 //   P(s)   = (s_a ; s_a^2/2 ; s_a s_b)            Taylor basis, X = (h f_a ; h^2 f_aa ; h^2 f_ab)
@@ -24,7 +24,7 @@
 namespace shizuku {
 namespace weights {
 
-// Fallback thresholds of methods.md 3.4 with the dimension defaults filled in.
+// Fallback thresholds of docs/method.md 3.4 with the dimension defaults filled in.
 template <int D> struct Limits {
   int minNeighboursFI, minNeighboursFirstOrder;
   double minRcondFI, minRcondFirstOrder;

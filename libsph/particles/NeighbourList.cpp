@@ -1,4 +1,4 @@
-// Neighbour search by a cell-linked list (methods.md 13 step 1): all pairs
+// Neighbour search by a cell-linked list (docs/method.md 13 step 1): all pairs
 // 0 < |r_ij| < radius in CSR form, O(N), minimum image in periodic directions.
 //
 // build(): (1) a uniform grid over the bounding box (periodic directions: over

@@ -1,5 +1,5 @@
 // Neighbour lists in compressed-row (CSR) form, built by a cell-linked list
-// in O(N) and reused by every pass of a step (methods.md 13 step 1).
+// in O(N) and reused by every pass of a step (docs/method.md 13 step 1).
 // Pair data are stored per pair, contiguously: neighbour index j (j != i),
 // r_ij = r_i - r_j (minimum image in periodic directions) and |r_ij|.
 #pragma once

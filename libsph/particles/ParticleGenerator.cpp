@@ -1,6 +1,6 @@
 // Builds the initial particle set from system/particlesDict: fluid boxes and
 // circles on the lattice (i + 1/2) d0, wall boxes with `layers` rows outside
-// the wall surface (methods.md 11), removal of fluid that overlaps walls (a
+// the wall surface (docs/method.md 11), removal of fluid that overlaps walls (a
 // cell grid, O(N)), initial velocities (uniform, rigid rotation, linear,
 // muParser expression), and the periodic box. Every rule and key is listed in
 // ParticleGenerator.hpp.
@@ -521,6 +521,66 @@ void checkAgainstWalls(const Dictionary& regions, const Region<D>& f, const std:
   }
 }
 
+// Each region was checked alone; now all of them together (upper bounds: before overlap removal).
+template <int D>
+void checkTotalCount(const Dictionary& regionsDict, const std::vector<Region<D>>& fluids,
+                     const std::vector<Region<D>>& walls, double d0, double limit) {
+  double total = 0;
+  for (const auto* list : {&fluids, &walls})
+    for (const auto& r : *list) {
+      double inner = 1, outer = 1;
+      for (int k = 0; k < D; ++k) {
+        inner *= double(r.cells[k]);
+        outer *= double(r.cells[k]) + double(r.layers) * (int(!r.open[2 * k]) + int(!r.open[2 * k + 1]));
+      }
+      const double a = r.radius / d0;
+      total += r.circle ? (D == 2 ? M_PI * a * a : 4.0 / 3.0 * M_PI * a * a * a) : r.fluid ? inner : outer - inner;
+    }
+  if (total > limit)
+    regionsDict.error("regions", "the regions would hold " + countText(total) + " particles, more than maxParticles " +
+                                     countText(limit) + " (spacing " + fmt(d0) +
+                                     " m): use a larger spacing, or raise maxParticles in particlesDict");
+}
+
+// The wall particles of every wall region, in file order, without duplicates: a particle
+// closer than d0/2 to an earlier one (where boxes meet) is dropped.
+template <int D>
+void fillWalls(std::vector<Region<D>>& walls, double d0, std::vector<Vec<D>>& wallPoints, PointGrid<D>& wallGrid) {
+  const double tol = kSlack * d0;
+  for (auto& w : walls) {
+    fillWall(w, d0);
+    wallPoints.reserve(wallPoints.size() + w.points.size());
+    for (const auto& x : w.points) {
+      if (wallGrid.anyCloserThan(x, 0.5 * d0 - tol)) continue;
+      wallPoints.push_back(x);
+      wallGrid.insert(Index(wallPoints.size() - 1));
+    }
+  }
+}
+
+// Fluid particles inside a wall's layers or closer than d0/2 to a wall particle are removed.
+template <int D>
+void removeFluidInWalls(const Dictionary& regionsDict, Region<D>& f, const std::vector<Region<D>>& walls,
+                        const PointGrid<D>& wallGrid, double d0) {
+  const double tol = kSlack * d0;
+  const long n = long(f.points.size());
+  std::vector<char> keep(n, 1);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const Vec<D>& x = f.points[i];
+    for (const auto& w : walls)
+      if (w.inLayers(x, tol)) keep[i] = 0;
+    if (keep[i] && wallGrid.anyCloserThan(x, 0.5 * d0 - tol)) keep[i] = 0;
+  }
+  std::vector<Vec<D>> kept;
+  for (long i = 0; i < n; ++i)
+    if (keep[i]) kept.push_back(f.points[i]);
+  if (kept.empty())
+    regionsDict.error(f.name, "fluid region '" + f.name + "' lies entirely inside walls: all " +
+                                  std::to_string(n) + " of its particles were removed");
+  f.points = std::move(kept);
+}
+
 double readSpacing(const Dictionary& particlesDict) { return spacing.read(particlesDict); }
 
 template <int D>
@@ -549,25 +609,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
       walls.push_back(readWall<D>(r, name, d0, regionsDict, limit));
   }
   if (fluids.empty()) regionsDict.error("regions", "no fluid region (a region with 'type fluid;') is defined");
-  {
-    // Each region was checked alone; now all of them together (upper bounds:
-    // before overlap removal).
-    double total = 0;
-    for (const auto* list : {&fluids, &walls})
-      for (const auto& r : *list) {
-        double inner = 1, outer = 1;
-        for (int k = 0; k < D; ++k) {
-          inner *= double(r.cells[k]);
-          outer *= double(r.cells[k]) + double(r.layers) * (int(!r.open[2 * k]) + int(!r.open[2 * k + 1]));
-        }
-        const double a = r.radius / d0;
-        total += r.circle ? (D == 2 ? M_PI * a * a : 4.0 / 3.0 * M_PI * a * a * a) : r.fluid ? inner : outer - inner;
-      }
-    if (total > limit)
-      regionsDict.error("regions", "the regions would hold " + countText(total) + " particles, more than maxParticles " +
-                                       countText(limit) + " (spacing " + fmt(d0) +
-                                       " m): use a larger spacing, or raise maxParticles in particlesDict");
-  }
+  checkTotalCount<D>(regionsDict, fluids, walls, d0, limit);
   for (std::size_t b = 0; b < fluids.size(); ++b)
     for (std::size_t a = 0; a < b; ++a)
       if (overlap(fluids[a], fluids[b], tol))
@@ -578,15 +620,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
   // 2. Wall particles; a particle closer than d0/2 to an earlier one is dropped.
   std::vector<Vec<D>> wallPoints;
   PointGrid<D> wallGrid(0.5 * d0, wallPoints);
-  for (auto& w : walls) {
-    fillWall(w, d0);
-    wallPoints.reserve(wallPoints.size() + w.points.size());
-    for (const auto& x : w.points) {
-      if (wallGrid.anyCloserThan(x, 0.5 * d0 - tol)) continue;
-      wallPoints.push_back(x);
-      wallGrid.insert(Index(wallPoints.size() - 1));
-    }
-  }
+  fillWalls<D>(walls, d0, wallPoints, wallGrid);
 
   // 3. Fluid particles, minus those inside or next to a wall; velocities.
   std::vector<Vec<D>> fluidPoints, fluidVelocity;
@@ -595,22 +629,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
     if (f.points.empty())
       regionsDict.error(f.name, "fluid region '" + f.name + "' holds no particle (radius " + fmt(f.radius) +
                                     " m against spacing " + fmt(d0) + " m)");
-    const long n = long(f.points.size());
-    std::vector<char> keep(n, 1);
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      const Vec<D>& x = f.points[i];
-      for (const auto& w : walls)
-        if (w.inLayers(x, tol)) keep[i] = 0;
-      if (keep[i] && wallGrid.anyCloserThan(x, 0.5 * d0 - tol)) keep[i] = 0;
-    }
-    std::vector<Vec<D>> kept;
-    for (long i = 0; i < n; ++i)
-      if (keep[i]) kept.push_back(f.points[i]);
-    if (kept.empty())
-      regionsDict.error(f.name, "fluid region '" + f.name + "' lies entirely inside walls: all " +
-                                    std::to_string(n) + " of its particles were removed");
-    f.points = std::move(kept);
+    removeFluidInWalls<D>(regionsDict, f, walls, wallGrid, d0);
     checkAgainstWalls(regionsDict, f, walls);
     for (const auto& x : f.points)
       for (int k = 0; k < D; ++k)

@@ -1,5 +1,5 @@
-// Initial particles from system/particlesDict (design.md 1.2; lattice and
-// wall layers as methods.md section 11: fluid at (i + 1/2) d0 from a wall
+// Initial particles from system/particlesDict (docs/design.md 1.2; lattice and
+// wall layers as docs/method.md section 11: fluid at (i + 1/2) d0 from a wall
 // line, dummy layers at -(k + 1/2) d0, k = 0..layers-1).
 //
 // Keys read (declared once, with defaults and ranges, in ParticleGenerator.cpp;

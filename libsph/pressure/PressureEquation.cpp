@@ -1,4 +1,4 @@
-// PPE assembly and solve, methods.md 4.2 and 11 (option A).
+// PPE assembly and solve, docs/method.md 4.2 and 11 (option A).
 #include "pressure/PressureEquation.hpp"
 #include "boundaries/WallParticles.hpp"
 #include <algorithm>
@@ -94,7 +94,7 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
       // sign pattern (a negative neighbour weight or a non-positive diagonal, seen
       // on strongly one-sided stencils near a free surface meeting a wall) would
       // make the system indefinite; it takes the always-positive standard
-      // (Brookshaw/Morris) weights -2 W'(r)/r instead (methods.md 3.3, 3.4).
+      // (Brookshaw/Morris) weights -2 W'(r)/r instead (docs/method.md 3.3, 3.4).
       bool mMatrix = true;
       double sum = 0;
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {

@@ -1,8 +1,8 @@
-// The pressure Poisson equation of the projection step (eqs 5-6/9, methods.md 4.2):
+// The pressure Poisson equation of the projection step (eqs 5-6/9, docs/method.md 4.2):
 //   interior and vicinity fluid rows:  -<lap p>_i = -b_i   (SPH(2) Laplacian weights, sign flipped so
 //                                      the diagonal is positive)
 //   free-surface and splash particles: p = 0 (Dirichlet, eliminated)
-//   wall particles with fluid neighbours: the Adami row (methods.md 11 A)
+//   wall particles with fluid neighbours: the Adami row (docs/method.md 11 A)
 //   no Dirichlet particle at all (closed or fully periodic domain): one row pinned to p = 0.
 // Every particle has a row, in particle order, so the numbering of the system
 // only changes when the particles are reordered (a solver may then keep a

@@ -1,4 +1,4 @@
-// Free-surface detection, classes and normals: methods.md 5.1-5.3.
+// Free-surface detection, classes and normals: docs/method.md 5.1-5.3.
 // Reads system/sphSchemes freeSurface { candidateThreshold; splashThreshold;
 // vicinityRadius; enabled; scanRegion; } through the declarations below.
 #include "surface/FreeSurface.hpp"
@@ -13,7 +13,7 @@ namespace key {
 
 // divR is D for a full neighbourhood, so thresholds above 3 would mark every particle.
 const ParameterGroup freeSurface("system/sphSchemes: freeSurface",
-    "Free-surface detection (methods 5): divR thresholds, vicinity, scan region.");
+    "Free-surface detection (docs/method.md 5): divR thresholds, vicinity, scan region.");
 const ScalarParameter candidateThreshold = freeSurface.scalar("candidateThreshold", dim::none,
     "divR below this: free-surface candidate (stage 1)").def(1.75).shownDefault("1.75 (2D), 2.625 (3D)").min(0).max(3);
 const ScalarParameter splashThreshold = freeSurface.scalar("splashThreshold", dim::none,

@@ -1,4 +1,4 @@
-// Free-surface detection, particle classes and outward normals (methods.md 5).
+// Free-surface detection, particle classes and outward normals (docs/method.md 5).
 //   divR_i  = -sum_j V r_ij . gradW_ij           (uncorrected kernel gradient, fluid + walls)
 //   gradC_i = sum_j V gradW_ij                   (non-difference form; points into the fluid)
 //   n_i     = -gradC_i / |gradC_i|               (outward normal)

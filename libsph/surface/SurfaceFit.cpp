@@ -1,5 +1,5 @@
 // Leave-one-out weighted line/plane fit of the free surface and the curvature of
-// eq. 20 (methods.md 8.2, 8.4); see SurfaceFit.hpp for the formulas.
+// eq. 20 (docs/method.md 8.2, 8.4); see SurfaceFit.hpp for the formulas.
 // Reads no dictionary keys.
 #include "surface/SurfaceFit.hpp"
 #include <Eigen/Eigenvalues>

@@ -1,4 +1,4 @@
-// Leave-one-out surface fit and surface curvature (methods.md 8.2 and 8.4,
+// Leave-one-out surface fit and surface curvature (docs/method.md 8.2 and 8.4,
 // seed eqs. 19-21).
 //
 // For a free-surface (free or splash) or vicinity fluid particle i, let Q be the
@@ -11,12 +11,12 @@
 // Quality gate: the fit is used only if |Q| >= D, lambda_min / lambda_max <= maxEigenRatio
 // (the points lie on a line/plane) and, in 3D, lambda_mid / lambda_max >= minSpreadRatio
 // (they are not collinear). Leaving i out makes s exact for a flat surface with i
-// displaced (methods.md 8.2: including i biases s to ~0.37 of the displacement).
+// displaced (docs/method.md 8.2: including i biases s to ~0.37 of the displacement).
 //
 // Curvature, eq. 20, in units of 1/d0:
 //   kappa_i d0 = factor * d0 * sum_{j in S_i,free} V (n_j - n_i) . gradW_ij
 // with the corrected SPH(2) gradient weights gradW (s.weights.gradW) and the fitted
-// normals. The seed's factor is 0.34; methods.md 8.4 could not reproduce it (the
+// normals. The paper's factor is 0.34; docs/method.md 8.4 could not reproduce it (the
 // factor giving kappa = 1/R on a lattice disc is ~0.9 with the FI gradient), see
 // docs/shifting.md for the calibration measured here.
 //
@@ -28,7 +28,7 @@ namespace shizuku {
 
 struct SurfaceFitSettings {
   double curvatureFactor = 0.34;  // seed eq. 20
-  double maxEigenRatio = 0.3;     // methods.md 8.2 step 5
+  double maxEigenRatio = 0.3;     // docs/method.md 8.2 step 5
   double minSpreadRatio = 0.05;   // 3D only: second eigenvalue / largest
 };
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Order of convergence in the particle spacing (issue 4, item 9; label `regression`).
+"""Order of convergence in the particle spacing (label `regression`).
 
 usage: spaceOrder.py CASE WORK --shizuku BIN --compare SHIZUKUCOMPARE
                      [--levels 10,20,40] [--shifting on|off] [--threads 2] [--min-order P]

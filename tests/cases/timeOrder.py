@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Order of convergence in the time step (issue 4, item 9; label `regression`).
+"""Order of convergence in the time step (label `regression`).
 
 usage: timeOrder.py CASE WORK --shizuku BIN --compare SHIZUKUCOMPARE [--levels 5]
                     [--endTime 0.4] [--threads 2]

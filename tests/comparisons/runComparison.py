@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The paper's comparisons at CI size (issue 5; label `comparison`, docs/testing.md).
+"""The paper's comparisons at CI size (label `comparison`, docs/testing.md).
 
 usage: runComparison.py NAME WORK --shizuku BIN --compare SHIZUKUCOMPARE --proposed DIR
                         --baseline DIR --spacing D0 --deltaT DT --endTime T --window T0 T1

@@ -47,6 +47,11 @@ FENCE = re.compile(r"^\s*(```|~~~)")
 
 
 def tracked_files(root):
+    """The repository's text files; fuzzing corpora are inputs, not documentation."""
+    return [f for f in all_files(root) if not f.startswith("fuzz/corpus/")]
+
+
+def all_files(root):
     try:
         out = subprocess.run(["git", "-C", root, "ls-files", "-z"], capture_output=True, check=True).stdout
         files = [f for f in out.decode("utf-8", "replace").split("\0") if f]

@@ -1,5 +1,5 @@
 """Reader for the particles.vtp files Shizuku writes (VTK XML PolyData with
-raw appended data and UInt64 block headers, design.md 1.3), enough for the
+raw appended data and UInt64 block headers, docs/design.md 1.3), enough for the
 fault tests to check that a file is complete and to compare fields.
 
 read_vtp(path) -> dict name -> list of tuples (one tuple per point or per

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The tutorials' comparison plots (issue 5) on hand-made postProcessing files:
+"""The tutorials' comparison plots on hand-made postProcessing files:
 tutorials/damBreakOPS/plotComparison.py (mode and mean, volume sum, histograms) and
 tutorials/rotatingSquarePatchBaseline/plotComparison.py (centre pressure, density; a run that
 stopped early is marked and its time printed).

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""shizukuPlot on a hand-made case (design.md 1.1): two time directories with
+"""shizukuPlot on a hand-made case (docs/design.md 1.1): two time directories with
 a 12 x 8 particle set (fluid with a linear pressure, a row of walls) written
 with VTK's XML writer, postProcessing files with scalars, vectors, a restart
 folder and a density-error histogram, and a reference CSV. The script must

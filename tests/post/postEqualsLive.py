@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""shizukuPostProcess equals the live run (design.md 1.1, 1.3).
+"""shizukuPostProcess equals the live run (docs/design.md 1.1, 1.3).
 
 A small dam break (fluid column in a walled tank: walls, free surface,
 splash, shifting, ADS, XSPH, particle reordering every 20 steps) runs with

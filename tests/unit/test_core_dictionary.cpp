@@ -1,4 +1,4 @@
-// Tests of the case-dictionary reader (design.md 1.2): every syntax element,
+// Tests of the case-dictionary reader (docs/design.md 1.2): every syntax element,
 // unit conversion to SI, dimension checks, macros, includes, read tracking and
 // every error path (the message must name file, line, column, keyword and,
 // where there is one, the "did you mean" suggestion).

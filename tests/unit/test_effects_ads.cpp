@@ -1,4 +1,4 @@
-// Tests of ADS (methods.md 9): pairs closer than d_ADS are restored in one Jacobi
+// Tests of ADS (docs/method.md 9): pairs closer than d_ADS are restored in one Jacobi
 // application, walls and interior particles are not moved, a lattice at spacing d0
 // is untouched.
 #define BOOST_TEST_MODULE effects_ads

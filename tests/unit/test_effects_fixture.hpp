@@ -2,7 +2,7 @@
 // filled the way the solver fills it at the start of a step (neighbour list,
 // SPH(2) weights for fluid particles, summation density), with surface classes
 // and normals set by the test. Cubic spline, h = 1.2 d0, rho0 = 1000, mass
-// calibrated on the d0 lattice (methods.md 2).
+// calibrated on the d0 lattice (docs/method.md 2).
 #pragma once
 #include "operators/DerivativeOperator.hpp"
 #include "operators/FlowState.hpp"

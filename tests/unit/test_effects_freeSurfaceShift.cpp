@@ -1,4 +1,4 @@
-// No particle is shifted across the free surface (methods.md 6, OPS): on a disordered
+// No particle is shifted across the free surface (docs/method.md 6, OPS): on a disordered
 // block with a free top row, the combined shift (OPS + volume correction + surface
 // fitting, capped at 0.1 h) has no component along each free particle's (fitted)
 // normal beyond the surface-fitting term, C_suf h |s| <= 1e-4 * 1.2 * 0.6 d0.

@@ -1,4 +1,4 @@
-// Tests of the distribution shift (OPS eqs. 11-13, DPS eq. 14; methods.md 6, 7):
+// Tests of the distribution shift (OPS eqs. 11-13, DPS eq. 14; docs/method.md 6, 7):
 // zero shift on a uniform lattice (also next to walls), the sign of the shift of a
 // displaced particle, relaxation of a perturbed periodic lattice, and the
 // tangential projection on free-surface and vicinity particles.
@@ -89,7 +89,7 @@ BOOST_AUTO_TEST_CASE(uniform_lattice_gets_no_shift) {
 
 BOOST_AUTO_TEST_CASE(fluid_next_to_walls_gets_no_shift) {
   // Fluid rows y = 0..5 on 3 wall layers y = -3..-1, periodic in x: the fluid near the wall
-  // is not pushed into it because wall particles are in the sum (methods.md 6).
+  // is not pushed into it because wall particles are in the sum (docs/method.md 6).
   Fixture<2> f;
   forBox<2>({0, -3, 0}, {11, 8, 0}, [&](const std::array<int, 3>& idx) {
     f.add(latticePoint<2>(idx, 1.0), idx[1] < 0 ? ParticleType::wall : ParticleType::fluid);

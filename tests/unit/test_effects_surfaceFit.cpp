@@ -1,5 +1,5 @@
-// Tests of the leave-one-out surface fit and curvature (methods.md 8.2, 8.4) and of
-// the surface-fitting shift, eq. (19) with its gates and sign (methods.md 8.1, 8.3).
+// Tests of the leave-one-out surface fit and curvature (docs/method.md 8.2, 8.4) and of
+// the surface-fitting shift, eq. (19) with its gates and sign (docs/method.md 8.1, 8.3).
 #define BOOST_TEST_MODULE effects_surfaceFit
 #include <boost/test/unit_test.hpp>
 #include "effects/SurfaceFitting.hpp"
@@ -175,10 +175,10 @@ BOOST_AUTO_TEST_CASE(curvature_gate) {
 
 BOOST_AUTO_TEST_CASE(disc_curvature_calibration) {
   // Lattice disc of radius R = 20 d0; free = lattice points inside with an axis
-  // neighbour outside; vicinity within 2h; exact radial normals (as methods.md 8.4)
+  // neighbour outside; vicinity within 2h; exact radial normals (as docs/method.md 8.4)
   // or fitted normals. Reported: the factor that makes kappa = 1/R, (d0/R) / mean sum.
   // Measured: exact normals: 112 free particles, mean sum 0.0529 (sd 0.021), factor
-  // 0.945 (methods.md 8.4: 0.84-0.96); with the seed's 0.34, kappa R = 0.36.
+  // 0.945 (docs/method.md 8.4: 0.84-0.96); with the paper's 0.34, kappa R = 0.36.
   // Fitted normals follow the lattice staircase (the axis tips stick out by 1 d0, s = 1):
   // mean sum 0.30 (sd 1.19) dominated by the tips; the median is printed.
   const double R = 20;

@@ -1,4 +1,4 @@
-// Tests of the volume-conservation shift, eq. (17) (methods.md 7): in a closed box
+// Tests of the volume-conservation shift, eq. (17) (docs/method.md 7): in a closed box
 // (fluid lattice inside 3 wall layers, all fluid interior) a uniformly expanded
 // fluid (spacing 1.02 d0, mass of the d0 lattice) contracts, a compressed one
 // (0.98 d0) expands, and the d0 lattice gets no shift; near a free surface with a
@@ -150,7 +150,7 @@ SlabResult slab(double a, double vicinityDepth) {
 BOOST_AUTO_TEST_CASE(kernel_deficit_of_surface_neighbours_does_not_pull_the_interior) {
   // Spacing exactly d0 and a vicinity band one row deep: the rows next to the free rows
   // have truncated kernel sums (<rho> < rho), the interior has exact ones. Their deficit
-  // is not a density error: no interior particle may move (methods.md 7 notes; reading
+  // is not a density error: no interior particle may move (docs/method.md 7 notes; reading
   // it as under-density pulled the interior outward and spread it).
   const SlabResult r = slab(1.0, 1.5);
   double maxLen = 0;

@@ -1,4 +1,4 @@
-// Tests of the XSPH advection velocity (methods.md 10).
+// Tests of the XSPH advection velocity (docs/method.md 10).
 #define BOOST_TEST_MODULE effects_xsph
 #include <boost/test/unit_test.hpp>
 #include "effects/XSPH.hpp"

@@ -1,4 +1,4 @@
-// Function objects as the solver drives them (design.md 1.3): built only when
+// Function objects as the solver drives them (docs/design.md 1.3): built only when
 // listed in `functions`, unknown types and misspelt keys rejected, sampling by
 // their own writeControl/writeInterval, files under
 // postProcessing/<name>/<startTime>/ with `#` column and unit headers and rows

@@ -1,5 +1,5 @@
 // Function-object numbers against hand-computed values on small built particle
-// sets (design.md 1.3): conservation (volume, kinetic energy, linear and
+// sets (docs/design.md 1.3): conservation (volume, kinetic energy, linear and
 // angular momentum of a translating rigid rotation, closed forms), fluidExtent
 // (the lattice box), densityError (eq. 22 mean/rms/max/mode and histogram
 // counts of a density field set by hand, interior and all fluid), probes

@@ -1,4 +1,4 @@
-// writeFormat ascii (design.md 1.3): one plain-text file per field in the
+// writeFormat ascii (docs/design.md 1.3): one plain-text file per field in the
 // time directory, '#' header lines (field, unit, time, count, columns), then
 // one line per particle whose numbers read back to exactly the written values.
 #define BOOST_TEST_MODULE io_ascii

@@ -1,4 +1,4 @@
-// Crash safety of time-directory writes (design.md 1.3: "a crash never leaves
+// Crash safety of time-directory writes (docs/design.md 1.3: "a crash never leaves
 // a half-written time directory"). Every file-system step of a write is made
 // to fail in turn (the failure hook returns ENOSPC, as a full disk would); after
 // each failure the previous directory of the same name must be bit-identical,

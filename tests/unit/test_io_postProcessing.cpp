@@ -1,4 +1,4 @@
-// postProcessing/<name>/<startTime>/<file> (design.md 1.3): folders created,
+// postProcessing/<name>/<startTime>/<file> (docs/design.md 1.3): folders created,
 // '#' header lines with column names and units, one row per sample flushed at
 // once (readable while the writer is still open), a rerun from the same start
 // time replaces its own file, a restart with another start time never touches

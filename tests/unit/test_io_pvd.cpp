@@ -1,4 +1,4 @@
-// particles.pvd (design.md 1.3) opens the whole series with correct times:
+// particles.pvd (docs/design.md 1.3) opens the whole series with correct times:
 // written out of order, the collection must list every complete time directory
 // sorted by time; it is read back with VTK's own XML parser and each listed
 // vtp through vtkXMLPolyDataReader, checking the point count, vertex cells,

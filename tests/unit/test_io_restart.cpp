@@ -1,5 +1,5 @@
 // startFrom latestTime continues exactly as an uninterrupted run would
-// (design.md 1.3), bit for bit. A toy deterministic time loop stands in for
+// (docs/design.md 1.3), bit for bit. A toy deterministic time loop stands in for
 // the solver: it uses every field a ParticleSet carries (positions,
 // velocities, pressure, density, shift, classes, ids, mass, rho0, spacing) and
 // the whole TimeState (time, step, dt adapted from max |U| and limited by the

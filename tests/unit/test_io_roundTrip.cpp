@@ -1,4 +1,4 @@
-// Time directories read back bit for bit (design.md 1.3: restart reads
+// Time directories read back bit for bit (docs/design.md 1.3: restart reads
 // particles.vtp back exactly): random ParticleSet<2> and <3> with awkward
 // doubles (denormals, -0, 1e+-300, DBL_MAX) and full-range 64-bit ids,
 // optional fields absent and present, the TimeState of uniform/time, and

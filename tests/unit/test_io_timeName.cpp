@@ -1,4 +1,4 @@
-// Time directory names (design.md 1.3): the %g general format at 8
+// Time directory names (docs/design.md 1.3): the %g general format at 8
 // significant digits, parsed back to the same time; directory names that are
 // not numbers are rejected; exactNumber() text reads back bit for bit.
 #define BOOST_TEST_MODULE io_timeName

@@ -1,4 +1,4 @@
-// Still water in a tank (methods.md 4.2): with u* = g dt everywhere and the
+// Still water in a tank (docs/method.md 4.2): with u* = g dt everywhere and the
 // dummy walls showing the Shepard fluid velocity, the linear hydrostatic field
 // p = rho g (y_top - y) satisfies every SPH(2) Laplacian row, every Dirichlet
 // row and every Adami wall row exactly, so the first projection step must

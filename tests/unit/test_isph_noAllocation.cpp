@@ -1,4 +1,4 @@
-// No allocation inside the time loop (issue 9, item 2; design rule "no
+// No allocation inside the time loop (design rule "no
 // allocation inside per-step functions once buffers have their capacity").
 // This executable replaces the global allocation functions (operator new and,
 // through glibc's __libc_* entry points, malloc/calloc/realloc/memalign, which

@@ -1,7 +1,7 @@
-// The effect registry builds only what a case asks for (the user's demand 3):
+// The effect registry builds only what a case asks for (an absent effect costs nothing):
 // an absent entry constructs no effect, allocates no particle array and adds no
 // timed stage; a present one does. Also: a restart from latestTime continues bit
-// for bit as the uninterrupted run (design.md 1.3), with adaptive time steps,
+// for bit as the uninterrupted run (docs/design.md 1.3), with adaptive time steps,
 // every effect, and particle reordering across the restart point. The restart
 // test uses a direct pressure solver: with the iterative default the two runs
 // differ at round-off (|dp| ~ 1e-9 Pa after 8 steps), which points at state kept

@@ -1,6 +1,5 @@
-// Kernel tests (methods.md section 2): normalisation, derivative, gradient
-// antisymmetry, compact support, lattice sums against the table of methods.md 2
-// (verify/rsp_p0.out), kernel names, the declared kernel { } settings.
+// Kernel tests (docs/method.md section 2): normalisation, derivative, gradient
+// antisymmetry, compact support, lattice sums against the table of docs/method.md 2, kernel names, the declared kernel { } settings.
 #define BOOST_TEST_MODULE kernels
 #include <boost/test/unit_test.hpp>
 
@@ -74,7 +73,7 @@ BOOST_AUTO_TEST_CASE(normalisation_derivative_support) {
     }
 }
 
-// methods.md 2 table (verify/rsp_p0.out), h = 1.2 d0, units 1/d0^2 in 2D.
+// docs/method.md 2 table, h = 1.2 d0, units 1/d0^2 in 2D.
 BOOST_AUTO_TEST_CASE(values_and_lattice_sums_2d) {
   const double d0 = 0.01;
   Kernel<2> cs(KernelType::cubicSpline, 1.2 * d0), wc(KernelType::WendlandC2, 1.2 * d0);

@@ -1,5 +1,4 @@
-// Convergence orders of the derivative operators (methods.md 3.3; reference
-// numbers in verify/sph2_check.out): f = sin(2x+0.5) cos(1.5y) + x^2 y on
+// Convergence orders of the derivative operators (docs/method.md 3.3): f = sin(2x+0.5) cos(1.5y) + x^2 y on
 // [0,1]^2, errors (rms over particles in (0.3,0.7)^2) at d0 = 1/20, 1/40, 1/80,
 // h = 1.2 d0, regular and +-0.2 d0 disordered; orders fitted by least squares
 // over the sequence. Plus a 3D check of the SPH2 gradient order.
@@ -89,7 +88,7 @@ std::pair<Result, Result> sph2Orders(KernelType kt, const std::string& label) {
 //  disordered SPH2 grad 4.836e-3 1.216e-3 3.036e-4 (order 2.00) [4.846e-3 1.210e-3 3.027e-4],
 //             SPH2 lap  2.122e-2 9.050e-3 4.458e-3 (order 1.13) [1.935e-2 8.504e-3 4.598e-3],
 //             corrected grad order 1.05 [KGC 1.07, 0.98]; standard grad order 0.02, 0.24 regular
-// The asserted bounds are those of methods.md 3.3 with a margin for the
+// The asserted bounds are those of docs/method.md 3.3 with a margin for the
 // random disorder (other seeds move the disordered orders by ~0.1).
 BOOST_AUTO_TEST_CASE(orders_2d_cubic_spline) {
   const KernelType kt = KernelType::cubicSpline;

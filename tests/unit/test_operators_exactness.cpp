@@ -1,4 +1,4 @@
-// Exactness of the derivative operators (methods.md 3.2, 3.5):
+// Exactness of the derivative operators (docs/method.md 3.2, 3.5):
 // SPH2 (FI) reproduces gradient, divergence, velocity gradient, Laplacian and
 // Hessian of every polynomial of degree <= 2 to round-off on disordered sets
 // (+-0.2 d0) in 2D and 3D; corrected (KGC + renormalised Laplacian) is exact

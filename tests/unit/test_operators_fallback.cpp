@@ -1,5 +1,4 @@
-// Fallback chain of the SPH2 weights near free surfaces (methods.md 3.4,
-// verify/sph2_surface.out): a flat free surface and a convex corner keep FI
+// Fallback chain of the SPH2 weights near free surfaces (docs/method.md 3.4): a flat free surface and a convex corner keep FI
 // (order 2), a 2-particle-thick jet falls back to first order (order 1), a
 // single row to standard SPH (order 0); an isolated particle gets standard
 // (zero) weights. Weights stay finite, the order flag is what the operator

@@ -1,4 +1,4 @@
-// Poisson solve with the SPH2 (FI) Laplacian (methods.md 3.3, last paragraph):
+// Poisson solve with the SPH2 (FI) Laplacian (docs/method.md 3.3, last paragraph):
 // lap p = 2y on [0,1]^2 with p = sin(pi x) sinh(pi y)/sinh(pi) + x^2 y,
 // Dirichlet values on the band of width 2h along the boundary (where stencils
 // are truncated), FI Laplacian rows inside, Eigen SparseLU. Error rms over the

@@ -1,5 +1,5 @@
-// Tests of the particle generator (system/particlesDict, design.md 1.2;
-// methods.md 11 for the wall layers): particle counts and positions of fluid
+// Tests of the particle generator (system/particlesDict, docs/design.md 1.2;
+// docs/method.md 11 for the wall layers): particle counts and positions of fluid
 // boxes, circles, spheres and wall boxes worked out by hand, removal of fluid
 // that overlaps walls (checked against a brute-force search), each initial
 // velocity type against its formula, the periodic box, and the input errors.
