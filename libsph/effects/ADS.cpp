@@ -24,6 +24,15 @@ const SwitchParameter approaching = ads.onOff("approaching", "act only on pairs 
 }  // namespace key
 }  // namespace
 
+template <int D>
+std::unique_ptr<Effect<D>> makeADS(const Dictionary& d, const FlowState<D>&) {
+  const double distance = key::distance.read(d);
+  typename ADS<D>::Options o;
+  o.pairwise = key::partners.read(d) == "pair";
+  o.approachingOnly = key::approaching.read(d);
+  o.wallDistance = key::wallDistance.readOr(d, distance);
+  return std::make_unique<ADS<D>>(distance, key::C.read(d), o);
+}
 
 template <int D>
 std::string ADS<D>::describe() const {
@@ -70,19 +79,6 @@ void ADS<D>::correctPositions(FlowState<D>& s) {
   this->actionCount_ = count;
 }
 
-template <int D>
-std::unique_ptr<Effect<D>> makeADS(const Dictionary& d, const FlowState<D>&) {
-  const double distance = key::distance.read(d);
-  typename ADS<D>::Options o;
-  o.pairwise = key::partners.read(d) == "pair";
-  o.approachingOnly = key::approaching.read(d);
-  o.wallDistance = key::wallDistance.readOr(d, distance);
-  return std::make_unique<ADS<D>>(distance, key::C.read(d), o);
-}
-
-template class ADS<2>;
-template class ADS<3>;
-
-SHIZUKU_EFFECT_FACTORY(makeADS);
+SHIZUKU_EFFECT(ADS, makeADS);
 
 }  // namespace shizuku

@@ -32,10 +32,9 @@ class ADS final : public PositionCorrectionEffect<D> {
     bool approachingOnly = false;  // approaching yes
     double wallDistance = -1;      // d_ADS / d0 for wall partners; < 0: the same as distance
   };
-  ADS(double distance, double C, Options o = {}) : distance_(distance), C_(C), o_(o) {
+  ADS(double distance, double C, Options o = {}) : PositionCorrectionEffect<D>("ads"), distance_(distance), C_(C), o_(o) {
     if (o_.wallDistance < 0) o_.wallDistance = distance;
   }
-  std::string name() const override { return "ads"; }
   std::string describe() const override;
   void allocate(const FlowState<D>& s) override { delta_.assign(s.size(), Vec<D>::Zero()); }
   void correctPositions(FlowState<D>& s) override;

@@ -53,8 +53,9 @@ struct TimeStepLimit {
 template <int D>
 class Effect {
  public:
+  explicit Effect(std::string name) : name_(std::move(name)) {}
   virtual ~Effect() = default;
-  virtual std::string name() const = 0;       // e.g. "gravity", "shifting/distribution"
+  const std::string& name() const { return name_; }  // e.g. "gravity", "shifting/distribution"
   virtual EffectStage stage() const = 0;      // fixed by the typed base below
   virtual std::string describe() const = 0;   // parameters with units, for -dryRun and the log
   EffectNeeds needs() const { return needs_; }
@@ -65,6 +66,7 @@ class Effect {
   long lastActionCount() const { return actionCount_; }
 
  protected:
+  std::string name_;
   EffectNeeds needs_;       // set by the constructor of an effect that needs more than the basics
   long actionCount_ = -1;   // set by the stage hook of an effect that counts
 };
@@ -73,27 +75,33 @@ class Effect {
 template <int D, EffectStage S>
 class EffectAt : public Effect<D> {
  public:
+  using Effect<D>::Effect;
   EffectStage stage() const final { return S; }
 };
 
 template <int D>
 struct ForceEffect : EffectAt<D, EffectStage::force> {
+  using EffectAt<D, EffectStage::force>::EffectAt;
   virtual void addAcceleration(const FlowState<D>&, std::vector<Vec<D>>& acc) = 0;
 };
 template <int D>
 struct PressureSourceEffect : EffectAt<D, EffectStage::pressureSource> {
+  using EffectAt<D, EffectStage::pressureSource>::EffectAt;
   virtual void addPressureSource(const FlowState<D>&, std::vector<double>& rhsPerParticle) = 0;
 };
 template <int D>
 struct AdvectionVelocityEffect : EffectAt<D, EffectStage::advection> {
+  using EffectAt<D, EffectStage::advection>::EffectAt;
   virtual void addAdvectionVelocity(const FlowState<D>&, const std::vector<Vec<D>>& uNew, std::vector<Vec<D>>& du) = 0;
 };
 template <int D>
 struct PositionCorrectionEffect : EffectAt<D, EffectStage::postAdvection> {
+  using EffectAt<D, EffectStage::postAdvection>::EffectAt;
   virtual void correctPositions(FlowState<D>&) = 0;
 };
 template <int D>
 struct ShiftTerm : EffectAt<D, EffectStage::shift> {
+  using EffectAt<D, EffectStage::shift>::EffectAt;
   virtual void addShift(const FlowState<D>&, std::vector<Vec<D>>& dr) = 0;
 };
 

@@ -20,4 +20,10 @@ template <int D> std::unique_ptr<Effect<D>> makeSurfaceFitting(const Dictionary&
   template std::unique_ptr<Effect<2>> make<2>(const Dictionary&, const FlowState<2>&); \
   template std::unique_ptr<Effect<3>> make<3>(const Dictionary&, const FlowState<3>&)
 
+// Explicit instantiation of an effect class and its factory for 2D and 3D.
+#define SHIZUKU_EFFECT(Class, make) \
+  template class Class<2>;          \
+  template class Class<3>;          \
+  SHIZUKU_EFFECT_FACTORY(make)
+
 }  // namespace shizuku

@@ -11,8 +11,7 @@ namespace {
 template <int D>
 class Gravity final : public ForceEffect<D> {
  public:
-  explicit Gravity(const Vec<D>& g) : g_(g) {}
-  std::string name() const override { return "gravity"; }
+  explicit Gravity(const Vec<D>& g) : ForceEffect<D>("gravity"), g_(g) {}
   std::string describe() const override {
     std::ostringstream os;
     os << "g = (" << g_.transpose() << ") m/s^2";

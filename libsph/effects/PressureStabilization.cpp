@@ -20,8 +20,7 @@ namespace {
 template <int D>
 class DensityInvariantSource final : public PressureSourceEffect<D> {
  public:
-  explicit DensityInvariantSource(double alpha) : alpha_(alpha) {}
-  std::string name() const override { return "pressureStabilization"; }
+  explicit DensityInvariantSource(double alpha) : PressureSourceEffect<D>("pressureStabilization"), alpha_(alpha) {}
   std::string describe() const override { return cat("type densityInvariant, alpha = ", alpha_); }
   void addPressureSource(const FlowState<D>& s, std::vector<double>& rhs) override {
     const auto& rho = s.particles.density;

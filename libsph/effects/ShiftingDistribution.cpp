@@ -22,6 +22,23 @@ const ScalarParameter projectionThreshold = distribution.scalar("projectionThres
 }  // namespace key
 }  // namespace
 
+template <int D>
+std::unique_ptr<Effect<D>> makeShiftingDistribution(const Dictionary& d, const FlowState<D>&) {
+  DistributionParameters p;
+  p.type = key::type.read(d) == "OPS" ? DistributionParameters::Type::OPS : DistributionParameters::Type::DPS;
+  p.C = key::C.read(d);
+  if (p.type == DistributionParameters::Type::OPS) {
+    if (p.C > 0.5) d.error("C", "must be <= 0.5 with type OPS (stability of the shifting diffusion, docs/method.md 6)");
+    p.Rp = key::Rp.read(d);
+    p.np = key::np.read(d);
+    const std::string g = key::gradient.read(d);
+    using G = DistributionParameters::Gradient;
+    p.gradient = g == "kernel" ? G::kernel : g == "corrected" ? G::corrected : G::concentration;
+  }
+  p.projectionThreshold = key::projectionThreshold.read(d);
+  return std::make_unique<ShiftingDistribution<D>>(p);
+}
+
 namespace {
 const char* gradientName(DistributionParameters::Gradient g) {
   switch (g) {
@@ -111,26 +128,6 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
   this->actionCount_ = count;
 }
 
-template <int D>
-std::unique_ptr<Effect<D>> makeShiftingDistribution(const Dictionary& d, const FlowState<D>&) {
-  DistributionParameters p;
-  p.type = key::type.read(d) == "OPS" ? DistributionParameters::Type::OPS : DistributionParameters::Type::DPS;
-  p.C = key::C.read(d);
-  if (p.type == DistributionParameters::Type::OPS) {
-    if (p.C > 0.5) d.error("C", "must be <= 0.5 with type OPS (stability of the shifting diffusion, docs/method.md 6)");
-    p.Rp = key::Rp.read(d);
-    p.np = key::np.read(d);
-    const std::string g = key::gradient.read(d);
-    using G = DistributionParameters::Gradient;
-    p.gradient = g == "kernel" ? G::kernel : g == "corrected" ? G::corrected : G::concentration;
-  }
-  p.projectionThreshold = key::projectionThreshold.read(d);
-  return std::make_unique<ShiftingDistribution<D>>(p);
-}
-
-template class ShiftingDistribution<2>;
-template class ShiftingDistribution<3>;
-
-SHIZUKU_EFFECT_FACTORY(makeShiftingDistribution);
+SHIZUKU_EFFECT(ShiftingDistribution, makeShiftingDistribution);
 
 }  // namespace shizuku

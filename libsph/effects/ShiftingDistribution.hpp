@@ -52,8 +52,7 @@ struct DistributionParameters {
 template <int D>
 class ShiftingDistribution final : public ShiftTerm<D> {
  public:
-  explicit ShiftingDistribution(const DistributionParameters& p) : par_(p) { this->needs_.normals = true; }
-  std::string name() const override { return "shifting/distribution"; }
+  explicit ShiftingDistribution(const DistributionParameters& p) : ShiftTerm<D>("shifting/distribution"), par_(p) { this->needs_.normals = true; }
   std::string describe() const override;
   void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
   const DistributionParameters& parameters() const { return par_; }

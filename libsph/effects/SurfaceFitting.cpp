@@ -23,6 +23,18 @@ const OptionParameter sign = fit.option("sign", {"smoothing", "asPrinted"},
 }  // namespace key
 }  // namespace
 
+template <int D>
+std::unique_ptr<Effect<D>> makeSurfaceFitting(const Dictionary& d, const FlowState<D>&) {
+  SurfaceFittingParameters p;
+  p.C = key::C.read(d);
+  p.maxCurvature = key::maxCurvature.read(d);
+  p.minDistance = key::minDistance.read(d);
+  p.maxDistance = key::maxDistance.read(d);
+  if (!(p.maxDistance > p.minDistance)) d.error("maxDistance", "must be greater than minDistance");
+  p.curvatureFactor = key::curvatureFactor.read(d);
+  p.smoothingSign = key::sign.read(d) == "smoothing";
+  return std::make_unique<SurfaceFitting<D>>(p);
+}
 
 template <int D>
 std::string SurfaceFitting<D>::describe() const {
@@ -52,22 +64,6 @@ void SurfaceFitting<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr)
   this->actionCount_ = count;
 }
 
-template <int D>
-std::unique_ptr<Effect<D>> makeSurfaceFitting(const Dictionary& d, const FlowState<D>&) {
-  SurfaceFittingParameters p;
-  p.C = key::C.read(d);
-  p.maxCurvature = key::maxCurvature.read(d);
-  p.minDistance = key::minDistance.read(d);
-  p.maxDistance = key::maxDistance.read(d);
-  if (!(p.maxDistance > p.minDistance)) d.error("maxDistance", "must be greater than minDistance");
-  p.curvatureFactor = key::curvatureFactor.read(d);
-  p.smoothingSign = key::sign.read(d) == "smoothing";
-  return std::make_unique<SurfaceFitting<D>>(p);
-}
-
-template class SurfaceFitting<2>;
-template class SurfaceFitting<3>;
-
-SHIZUKU_EFFECT_FACTORY(makeSurfaceFitting);
+SHIZUKU_EFFECT(SurfaceFitting, makeSurfaceFitting);
 
 }  // namespace shizuku

@@ -27,11 +27,10 @@ struct SurfaceFittingParameters {
 template <int D>
 class SurfaceFitting final : public ShiftTerm<D> {
  public:
-  explicit SurfaceFitting(const SurfaceFittingParameters& p) : par_(p) {
+  explicit SurfaceFitting(const SurfaceFittingParameters& p) : ShiftTerm<D>("shifting/surfaceFitting"), par_(p) {
     this->needs_.normals = true;
     this->needs_.surfaceFit = true;
   }
-  std::string name() const override { return "shifting/surfaceFitting"; }
   std::string describe() const override;
   void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
   const SurfaceFittingParameters& parameters() const { return par_; }

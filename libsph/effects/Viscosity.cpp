@@ -12,8 +12,7 @@ namespace {
 template <int D>
 class Viscosity final : public ForceEffect<D> {
  public:
-  Viscosity(double nu, WallVelocity walls) : nu_(nu), walls_(walls) {}
-  std::string name() const override { return "viscosity"; }
+  Viscosity(double nu, WallVelocity walls) : ForceEffect<D>("viscosity"), nu_(nu), walls_(walls) {}
   std::string describe() const override {
     return cat("nu = ", nu_, " m^2/s, walls ", walls_ == WallVelocity::noSlip ? "noSlip" : "slip");
   }

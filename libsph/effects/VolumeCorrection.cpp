@@ -14,6 +14,10 @@ const ScalarParameter C = volume.scalar("C", dim::none, "coefficient C_vol (shif
 }  // namespace key
 }  // namespace
 
+template <int D>
+std::unique_ptr<Effect<D>> makeVolumeCorrection(const Dictionary& d, const FlowState<D>&) {
+  return std::make_unique<VolumeCorrection<D>>(key::C.read(d));
+}
 
 template <int D>
 std::string VolumeCorrection<D>::describe() const {
@@ -53,14 +57,6 @@ void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& d
   this->actionCount_ = count;
 }
 
-template <int D>
-std::unique_ptr<Effect<D>> makeVolumeCorrection(const Dictionary& d, const FlowState<D>&) {
-  return std::make_unique<VolumeCorrection<D>>(key::C.read(d));
-}
-
-template class VolumeCorrection<2>;
-template class VolumeCorrection<3>;
-
-SHIZUKU_EFFECT_FACTORY(makeVolumeCorrection);
+SHIZUKU_EFFECT(VolumeCorrection, makeVolumeCorrection);
 
 }  // namespace shizuku

@@ -21,8 +21,7 @@ namespace shizuku {
 template <int D>
 class VolumeCorrection final : public ShiftTerm<D> {
  public:
-  explicit VolumeCorrection(double C) : C_(C) {}
-  std::string name() const override { return "shifting/volumeCorrection"; }
+  explicit VolumeCorrection(double C) : ShiftTerm<D>("shifting/volumeCorrection"), C_(C) {}
   std::string describe() const override;
   void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
   double coefficient() const { return C_; }

@@ -12,6 +12,10 @@ const ScalarParameter epsilon = xsph.scalar("epsilon", dim::none, "XSPH coeffici
 }  // namespace key
 }  // namespace
 
+template <int D>
+std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& d, const FlowState<D>&) {
+  return std::make_unique<XSPH<D>>(key::epsilon.read(d));
+}
 
 template <int D>
 void XSPH<D>::addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<D>>& u,
@@ -35,14 +39,6 @@ void XSPH<D>::addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<
   this->actionCount_ = count;
 }
 
-template <int D>
-std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& d, const FlowState<D>&) {
-  return std::make_unique<XSPH<D>>(key::epsilon.read(d));
-}
-
-template class XSPH<2>;
-template class XSPH<3>;
-
-SHIZUKU_EFFECT_FACTORY(makeXSPH);
+SHIZUKU_EFFECT(XSPH, makeXSPH);
 
 }  // namespace shizuku

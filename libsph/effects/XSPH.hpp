@@ -12,8 +12,7 @@ namespace shizuku {
 template <int D>
 class XSPH final : public AdvectionVelocityEffect<D> {
  public:
-  explicit XSPH(double epsilon) : epsilon_(epsilon) {}
-  std::string name() const override { return "xsph"; }
+  explicit XSPH(double epsilon) : AdvectionVelocityEffect<D>("xsph"), epsilon_(epsilon) {}
   std::string describe() const override { return cat("epsilon = ", epsilon_, ", on free-surface and vicinity particles"); }
   void addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<D>>& uNew,
                             std::vector<Vec<D>>& du) override;

@@ -36,7 +36,4 @@ class Conservation : public SampledFunctionObject<D> {
   std::optional<PostProcessingFile> file_;
 };
 
-extern template class Conservation<2>;
-extern template class Conservation<3>;
-
 }  // namespace shizuku

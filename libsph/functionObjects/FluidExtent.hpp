@@ -24,7 +24,4 @@ class FluidExtent : public SampledFunctionObject<D> {
   std::optional<PostProcessingFile> file_;
 };
 
-extern template class FluidExtent<2>;
-extern template class FluidExtent<3>;
-
 }  // namespace shizuku

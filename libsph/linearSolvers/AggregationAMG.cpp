@@ -136,18 +136,7 @@ bool AggregationAMG::setup(const SparseMatrixR& A) {
   }
   // The finest level smooths with this step's matrix.
   Level& L0 = levels_[0];
-  const int* outer = A.outerIndexPtr();
-  const int* col = A.innerIndexPtr();
-  const double* val = A.valuePtr();
-  bool ok = true;
-#pragma omp parallel for schedule(static) reduction(&& : ok)
-  for (int i = 0; i < n; ++i) {
-    double d = 0;
-    for (int p = outer[i]; p < outer[i + 1]; ++p)
-      if (col[p] == i) d = val[p];
-    ok = ok && d != 0;
-    L0.invDiag[i] = d != 0 ? 1.0 / d : 0.0;
-  }
+  const bool ok = invertDiagonal(A, L0.invDiag.data(), 0.0);
   return ok;
 }
 

@@ -6,6 +6,7 @@
 // A vanishing rho (r orthogonal to the shadow residual) restarts with r0 = r.
 #include "linearSolvers/Krylov.hpp"
 #include <cmath>
+#include <vector>
 
 namespace shizuku {
 
@@ -13,72 +14,58 @@ void KrylovWorkspace::resize(int n) {
   for (auto* v : {&r, &r0, &p, &v, &s, &t, &y, &z}) v->resize(n);
 }
 
-void multiply(const SparseMatrixR& A, const double* x, double* y) {
-  const int n = int(A.rows());
-  const int* outer = A.outerIndexPtr();
-  const int* col = A.innerIndexPtr();
-  const double* val = A.valuePtr();
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i) {
-    double s = 0;
-    for (int p = outer[i]; p < outer[i + 1]; ++p) s += val[p] * x[col[p]];
-    y[i] = s;
-  }
-}
-
-double relativeResidual(const SparseMatrixR& A, const double* b, const double* x) {
-  const int n = int(A.rows());
-  const int* outer = A.outerIndexPtr();
-  const int* col = A.innerIndexPtr();
-  const double* val = A.valuePtr();
-  double rr = 0, bb = 0;
-#pragma omp parallel for schedule(static) reduction(+ : rr, bb)
-  for (int i = 0; i < n; ++i) {
-    double s = -b[i];
-    for (int p = outer[i]; p < outer[i + 1]; ++p) s += val[p] * x[col[p]];
-    rr += s * s;
-    bb += b[i] * b[i];
-  }
-  return bb > 0 ? std::sqrt(rr / bb) : std::sqrt(rr);
-}
-
 namespace {
-// y = A x and returns (a, y).
-double multiplyDot(const SparseMatrixR& A, const double* x, double* y, const double* a) {
+// The one row loop of the products below: f(i, (A x)_i - b_i) for every row (b null: zero),
+// OpenMP over rows; Reduce carries the reductions (a struct with operator+=, value-initialised
+// to zero).
+template <class Reduce, class F>
+Reduce overRows(const SparseMatrixR& A, const double* x, const double* b, F&& f) {
   const int n = int(A.rows());
   const int* outer = A.outerIndexPtr();
   const int* col = A.innerIndexPtr();
   const double* val = A.valuePtr();
-  double d = 0;
-#pragma omp parallel for schedule(static) reduction(+ : d)
+  Reduce total{};
+#pragma omp declare reduction(sum : Reduce : omp_out += omp_in) initializer(omp_priv = Reduce{})
+#pragma omp parallel for schedule(static) reduction(sum : total)
   for (int i = 0; i < n; ++i) {
-    double s = 0;
+    double s = b ? -b[i] : 0.0;
     for (int p = outer[i]; p < outer[i + 1]; ++p) s += val[p] * x[col[p]];
-    y[i] = s;
-    d += a[i] * s;
+    f(i, s, total);
   }
-  return d;
+  return total;
 }
+
+struct NoSum {
+  NoSum& operator+=(const NoSum&) { return *this; }
+};
+struct TwoSums {
+  double a = 0, b = 0;
+  TwoSums& operator+=(const TwoSums& o) { a += o.a; b += o.b; return *this; }
+};
 
 // y = A x; returns (a, y) in ay and (y, y) in yy (one pass over the matrix).
 void multiplyDots(const SparseMatrixR& A, const double* x, double* y, const double* a, double& ay, double& yy) {
-  const int n = int(A.rows());
-  const int* outer = A.outerIndexPtr();
-  const int* col = A.innerIndexPtr();
-  const double* val = A.valuePtr();
-  double d = 0, e = 0;
-#pragma omp parallel for schedule(static) reduction(+ : d, e)
-  for (int i = 0; i < n; ++i) {
-    double sum = 0;
-    for (int q = outer[i]; q < outer[i + 1]; ++q) sum += val[q] * x[col[q]];
-    y[i] = sum;
-    d += sum * a[i];
-    e += sum * sum;
-  }
-  ay = d;
-  yy = e;
+  const TwoSums t = overRows<TwoSums>(A, x, nullptr, [&](int i, double s, TwoSums& r) {
+    y[i] = s;
+    r.a += s * a[i];
+    r.b += s * s;
+  });
+  ay = t.a;
+  yy = t.b;
 }
 }  // namespace
+
+void multiply(const SparseMatrixR& A, const double* x, double* y) {
+  overRows<NoSum>(A, x, nullptr, [&](int i, double s, NoSum&) { y[i] = s; });
+}
+
+double relativeResidual(const SparseMatrixR& A, const double* b, const double* x) {
+  const TwoSums t = overRows<TwoSums>(A, x, b, [&](int i, double s, TwoSums& r) {
+    r.a += s * s;
+    r.b += b[i] * b[i];
+  });
+  return t.b > 0 ? std::sqrt(t.a / t.b) : std::sqrt(t.a);
+}
 
 KrylovResult bicgstab(const SparseMatrixR& A, const double* b, double* x, const Preconditioner& M,
                       double tolerance, int maxIterations, KrylovWorkspace& w) {
@@ -133,7 +120,8 @@ KrylovResult bicgstab(const SparseMatrixR& A, const double* b, double* x, const 
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; ++i) p[i] = r[i] + beta * (p[i] - omega * v[i]);
     M.apply(p, y);
-    const double r0v = multiplyDot(A, y, v, r0);
+    double r0v = 0, vv = 0;
+    multiplyDots(A, y, v, r0, r0v, vv);
     if (r0v == 0 || !std::isfinite(r0v)) { res.breakdown = true; return res; }
     alpha = rho / r0v;
     double ss = 0;

@@ -9,9 +9,8 @@
 
 namespace shizuku {
 
-bool DiagonalPreconditioner::setup(const SparseMatrixR& A) {
+bool invertDiagonal(const SparseMatrixR& A, double* inv, double whenZero) {
   const int n = int(A.rows());
-  invDiag_.resize(n);
   const int* outer = A.outerIndexPtr();
   const int* col = A.innerIndexPtr();
   const double* val = A.valuePtr();
@@ -22,9 +21,14 @@ bool DiagonalPreconditioner::setup(const SparseMatrixR& A) {
     for (int p = outer[i]; p < outer[i + 1]; ++p)
       if (col[p] == i) d = val[p];
     ok = ok && d != 0 && std::isfinite(d);
-    invDiag_[i] = d != 0 ? 1.0 / d : 1.0;
+    inv[i] = d != 0 ? 1.0 / d : whenZero;
   }
   return ok;
+}
+
+bool DiagonalPreconditioner::setup(const SparseMatrixR& A) {
+  invDiag_.resize(A.rows());
+  return invertDiagonal(A, invDiag_.data(), 1.0);
 }
 
 void DiagonalPreconditioner::apply(const double* r, double* z) const {

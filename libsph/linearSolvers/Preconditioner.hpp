@@ -36,6 +36,9 @@ class Preconditioner {
   virtual void solved(int iterations) {}
 };
 
+// inv[i] = 1 / A_ii (whenZero where A_ii = 0); false when a diagonal entry is zero or not finite.
+bool invertDiagonal(const SparseMatrixR& A, double* inv, double whenZero);
+
 class DiagonalPreconditioner final : public Preconditioner {
  public:
   std::string describe() const override { return "diagonal"; }

@@ -32,6 +32,13 @@ std::string messageOf(const std::function<void()>& f) {
   return "";
 }
 
+// The message of reading parameter p from a dictionary "testDict" holding `text`.
+template <class P>
+std::string errorOfReading(const P& p, const char* text) {
+  const Dictionary d = Dictionary::fromString(text, "testDict");
+  return messageOf([&] { p.read(d); });
+}
+
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
 // Standard output while running f (the log writes warnings there).
@@ -63,14 +70,12 @@ BOOST_AUTO_TEST_CASE(defaults_when_absent) {
 }
 
 BOOST_AUTO_TEST_CASE(required_missing_names_keyword) {
-  const Dictionary d = Dictionary::fromString("maxCo 0.5;\n", "testDict");
-  const std::string m = messageOf([&] { deltaT.read(d); });
+  const std::string m = errorOfReading(deltaT, "maxCo 0.5;\n");
   BOOST_TEST(contains(m, "testDict: keyword 'deltaT': missing"), m);
 }
 
 BOOST_AUTO_TEST_CASE(below_minimum_names_keyword_file_and_line) {
-  const Dictionary d = Dictionary::fromString("maxCo 0.5;\ndeltaT 1e-13;\n", "testDict");
-  const std::string m = messageOf([&] { deltaT.read(d); });
+  const std::string m = errorOfReading(deltaT, "maxCo 0.5;\ndeltaT 1e-13;\n");
   BOOST_TEST(contains(m, "testDict:2:"), m);
   BOOST_TEST(contains(m, "keyword 'deltaT': 1e-13 is below the smallest allowed 1e-12 s"), m);
 }
@@ -85,8 +90,7 @@ BOOST_AUTO_TEST_CASE(exclusive_minimum_and_maximum) {
 }
 
 BOOST_AUTO_TEST_CASE(sane_magnitude_and_units) {
-  const Dictionary d = Dictionary::fromString("nu 1e300;\n", "testDict");
-  const std::string m = messageOf([&] { nu.read(d); });
+  const std::string m = errorOfReading(nu, "nu 1e300;\n");
   BOOST_TEST(contains(m, "keyword 'nu': 1e300 is beyond the physically sane magnitude 1e12 m^2/s"), m);
   // A unit is converted before the check and shown with the SI value.
   const Dictionary u = Dictionary::fromString("deltaT 1e-10 [ms];\n", "testDict");
@@ -116,14 +120,12 @@ BOOST_AUTO_TEST_CASE(old_spelling_reads_with_warning) {
   BOOST_TEST(value == 4);
   BOOST_TEST(contains(log, "Warning: testDict:1:1: keyword 'reuseSteps' is an old spelling; write 'amgReuse'"), log);
   d.checkAllRead();  // the old keyword counts as read
-  const Dictionary both = Dictionary::fromString("reuseSteps 4;\namgReuse 5;\n", "testDict");
-  const std::string m = messageOf([&] { reuse.read(both); });
+  const std::string m = errorOfReading(reuse, "reuseSteps 4;\namgReuse 5;\n");
   BOOST_TEST(contains(m, "keyword 'reuseSteps': is the old spelling of 'amgReuse', which is also given"), m);
 }
 
 BOOST_AUTO_TEST_CASE(option_list_did_you_mean) {
-  const Dictionary d = Dictionary::fromString("solver BiCGSTABB;\n", "testDict");
-  const std::string m = messageOf([&] { solver.read(d); });
+  const std::string m = errorOfReading(solver, "solver BiCGSTABB;\n");
   BOOST_TEST(contains(m, "testDict:1:1: keyword 'solver': 'BiCGSTABB' is not one of: BiCGSTAB | UMFPACK | KLU; "
                          "did you mean 'BiCGSTAB'?"), m);
   const Dictionary s = Dictionary::fromString("scanRegion maybe;\n", "testDict");
