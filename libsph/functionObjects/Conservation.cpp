@@ -53,14 +53,14 @@ ConservationValues<D> Conservation<D>::compute(const FlowState<D>& s) {
 
 template <int D>
 void Conservation<D>::open(const FlowState<D>&, const RunInfo& info) {
-  file_.emplace(this->makeFile(info, "conservation.dat"));
-  file_->comment(cat("conservation of the fluid particles (walls excluded), ", D, "D",
+  this->file_.emplace(this->makeFile(info, "conservation.dat"));
+  this->file_->comment(cat("conservation of the fluid particles (walls excluded), ", D, "D",
                      D == 2 ? ", per unit depth" : "", "\n",
                      "volume = sum m/<rho>_i (eq. 18); nominalVolume = N_fluid m/rho0; "
                      "kineticEnergy = sum m|u|^2/2;\n",
                      "momentum = sum m u; angularMomentum = sum m r x u about the origin",
                      D == 2 ? " (z component)" : ""));
-  file_->columns({"time", "volume", "nominalVolume", "kineticEnergy", "momentum", "angularMomentum"},
+  this->file_->columns({"time", "volume", "nominalVolume", "kineticEnergy", "momentum", "angularMomentum"},
                  {"s", units::volume(D), units::volume(D), units::energy(D), units::momentum(D),
                   units::angularMomentum(D)});
 }
@@ -73,7 +73,7 @@ void Conservation<D>::sample(const FlowState<D>& s, const RunInfo&) {
                     F::number(v.kineticEnergy) + " " + F::vector<D>(v.momentum) + " ";
   if constexpr (D == 2) row += F::number(v.angularMomentum[0]);
   else row += F::vector<3>(v.angularMomentum);
-  file_->row(row);
+  this->file_->row(row);
 }
 
 template class Conservation<2>;

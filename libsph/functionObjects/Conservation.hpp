@@ -31,9 +31,6 @@ class Conservation : public SampledFunctionObject<D> {
  protected:
   void open(const FlowState<D>& s, const RunInfo& info) override;
   void sample(const FlowState<D>& s, const RunInfo& info) override;
-
- private:
-  std::optional<PostProcessingFile> file_;
 };
 
 }  // namespace shizuku

@@ -100,19 +100,19 @@ const DensityErrorResult& DensityError<D>::evaluate(const FlowState<D>& s) {
 
 template <int D>
 void DensityError<D>::open(const FlowState<D>& s, const RunInfo& info) {
-  file_.emplace(this->makeFile(info, "densityError.dat"));
-  file_->comment(cat("density error e_i = (rho0 - <rho>_i)/rho0 x 100 % (eq. 22), <rho>_i the summation density, rho0 = ",
+  this->file_.emplace(this->makeFile(info, "densityError.dat"));
+  this->file_->comment(cat("density error e_i = (rho0 - <rho>_i)/rho0 x 100 % (eq. 22), <rho>_i the summation density, rho0 = ",
                      PostProcessingFile::number(s.rho0), " kg/m^3\n",
                      "mean, rms, max |e|, mode (centre of the fullest histogram bin): interior particles;\n",
                      "meanAll, rmsAll, maxAll, modeAll: all fluid particles (interior + vicinity + free + splash)"));
-  file_->columns({"time", "mean", "rms", "max", "mode", "meanAll", "rmsAll", "maxAll", "modeAll"},
+  this->file_->columns({"time", "mean", "rms", "max", "mode", "meanAll", "rmsAll", "maxAll", "modeAll"},
                  {"s", "%", "%", "%", "%", "%", "%", "%", "%"});
 }
 
 template <int D>
 void DensityError<D>::sample(const FlowState<D>& s, const RunInfo& info) {
   const auto& r = evaluate(s);
-  file_->row(s.time, {r.interior.mean, r.interior.rms, r.interior.max, r.interior.mode, r.all.mean, r.all.rms,
+  this->file_->row(s.time, {r.interior.mean, r.interior.rms, r.interior.max, r.interior.mode, r.all.mean, r.all.rms,
                       r.all.max, r.all.mode});
   if (write_ == HistogramWrite::sample || (write_ == HistogramWrite::writeTime && info.isWriteTime))
     writeHistogram(s, info);

@@ -49,7 +49,6 @@ class DensityError : public SampledFunctionObject<D> {
   double min_ = -10, max_ = 10;
   int bins_ = 80;
   HistogramWrite write_ = HistogramWrite::writeTime;
-  std::optional<PostProcessingFile> file_;
   DensityErrorResult result_;
   std::vector<long> threadCounts_;  // per thread: 2 x (bins + 2) counts
 };

@@ -41,9 +41,9 @@ void FluidExtent<D>::compute(const FlowState<D>& s, Vec<D>& lo, Vec<D>& hi) {
 
 template <int D>
 void FluidExtent<D>::open(const FlowState<D>&, const RunInfo& info) {
-  file_.emplace(this->makeFile(info, "extent.dat"));
-  file_->comment("bounding box of the fluid particle positions (walls excluded)");
-  file_->columns({"time", "min", "max"}, {"s", "m", "m"});
+  this->file_.emplace(this->makeFile(info, "extent.dat"));
+  this->file_->comment("bounding box of the fluid particle positions (walls excluded)");
+  this->file_->columns({"time", "min", "max"}, {"s", "m", "m"});
 }
 
 template <int D>
@@ -51,7 +51,7 @@ void FluidExtent<D>::sample(const FlowState<D>& s, const RunInfo&) {
   Vec<D> lo, hi;
   compute(s, lo, hi);
   using F = PostProcessingFile;
-  file_->row(F::number(s.time) + " " + F::vector<D>(lo) + " " + F::vector<D>(hi));
+  this->file_->row(F::number(s.time) + " " + F::vector<D>(lo) + " " + F::vector<D>(hi));
 }
 
 template class FluidExtent<2>;

@@ -19,9 +19,6 @@ class FluidExtent : public SampledFunctionObject<D> {
  protected:
   void open(const FlowState<D>& s, const RunInfo& info) override;
   void sample(const FlowState<D>& s, const RunInfo& info) override;
-
- private:
-  std::optional<PostProcessingFile> file_;
 };
 
 }  // namespace shizuku

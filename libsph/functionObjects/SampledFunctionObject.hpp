@@ -8,6 +8,7 @@
 #include "functionObjects/FunctionObject.hpp"
 #include "functionObjects/SampleControl.hpp"
 #include "io/PostProcessingFile.hpp"
+#include <optional>
 
 namespace shizuku {
 
@@ -33,6 +34,7 @@ class SampledFunctionObject : public FunctionObject<D> {
   PostProcessingFile makeFile(const RunInfo& info, const std::string& fileName) const {
     return PostProcessingFile(info.caseDir, name_, info.startTimeName, fileName);
   }
+  std::optional<PostProcessingFile> file_;  // the object's time-series file, opened by open()
 
  private:
   std::string name_, type_;

@@ -17,7 +17,7 @@ void Timing<D>::writeHeader() {
   }
   names.push_back("particleStepsPerSecond");
   units.push_back("1/s");
-  file_->columns(names, units);
+  this->file_->columns(names, units);
 }
 
 template <int D>
@@ -26,8 +26,8 @@ void Timing<D>::open(const FlowState<D>&, const RunInfo& info) {
     shizuku::info("timing '" + this->name() + "': no stage timers in post-processing; it writes nothing");
     return;
   }
-  file_.emplace(this->makeFile(info, "timing.dat"));
-  file_->comment(
+  this->file_.emplace(this->makeFile(info, "timing.dat"));
+  this->file_->comment(
       "wall-clock seconds spent in each stage of the step since the previous row, and\n"
       "particleStepsPerSecond = fluid particles x steps / wall seconds over the same interval");
   names_ = info.timers->names();
@@ -36,11 +36,11 @@ void Timing<D>::open(const FlowState<D>&, const RunInfo& info) {
 
 template <int D>
 void Timing<D>::sample(const FlowState<D>& s, const RunInfo& info) {
-  if (!info.timers || !file_) return;
+  if (!info.timers || !this->file_) return;
   const auto& total = info.timers->total();
   if (info.timers->names() != names_) {  // a stage registered late: new header, new baseline
     names_ = info.timers->names();
-    file_->comment("stages changed: new columns below");
+    this->file_->comment("stages changed: new columns below");
     writeHeader();
     lastTotal_.resize(total.size(), 0.0);
   }
@@ -50,7 +50,7 @@ void Timing<D>::sample(const FlowState<D>& s, const RunInfo& info) {
     const double wall = info.wallSeconds - lastWall_;
     row_.push_back(wall > 0 ? (info.particleSteps - lastParticleSteps_) / wall
                             : std::numeric_limits<double>::quiet_NaN());
-    file_->row(s.time, row_);
+    this->file_->row(s.time, row_);
   } else if (haveLast_) {
     return;  // no step since the previous sample: keep the baseline
   }

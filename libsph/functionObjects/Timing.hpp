@@ -26,7 +26,6 @@ class Timing : public SampledFunctionObject<D> {
 
  private:
   void writeHeader();
-  std::optional<PostProcessingFile> file_;
   std::vector<std::string> names_;      // stage names in the header
   std::vector<double> lastTotal_;       // stage totals at the previous sample
   double lastWall_ = 0, lastParticleSteps_ = 0;
