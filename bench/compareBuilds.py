@@ -13,7 +13,7 @@ the tutorials with `adjustTimeStep yes` (the time-step limits of the effects).
 Exit 1 when a run fails. Prints one line per tutorial.
 
 -speed N: instead, time each tutorial N times with each build, alternating old and new in
-one sitting, and print the best (smallest) time-loop wall time per particle-step (the log's
+one sitting (old-new, then new-old, ...), and print the best (smallest) time-loop wall time per particle-step (the log's
 "us per particle-step") and the best process CPU time (user + system) per particle-step of
 each build, with the ratio new/old. Measure on an idle machine.
 """
@@ -93,7 +93,9 @@ def speed(a, names):
             src = os.path.join(TOP, "tutorials", name)
             best = {"old": [float("inf")] * 2, "new": [float("inf")] * 2}
             for rep in range(a.speed):
-                for tag, exe in (("old", a.old), ("new", a.new)):
+                # ABBA order: the machine may favour the first or the second run of a pair.
+                pair = (("old", a.old), ("new", a.new))
+                for tag, exe in (pair if rep % 2 == 0 else pair[::-1]):
                     case = os.path.join(tmp, "%s-%s-%d" % (name, tag, rep))
                     prepare(src, case, a.steps, False)
                     text, cpu = execute(os.path.abspath(exe), case, a.threads)

@@ -43,12 +43,13 @@ struct TwoSums {
   TwoSums& operator+=(const TwoSums& o) { a += o.a; b += o.b; return *this; }
 };
 
-// y = A x; returns (a, y) in ay and (y, y) in yy (one pass over the matrix).
+// y = A x; returns (a, y) in ay and, when WithNorm, (y, y) in yy (one pass over the matrix).
+template <bool WithNorm>
 void multiplyDots(const SparseMatrixR& A, const double* x, double* y, const double* a, double& ay, double& yy) {
   const TwoSums t = overRows<TwoSums>(A, x, nullptr, [&](int i, double s, TwoSums& r) {
     y[i] = s;
     r.a += s * a[i];
-    r.b += s * s;
+    if (WithNorm) r.b += s * s;
   });
   ay = t.a;
   yy = t.b;
@@ -120,8 +121,8 @@ KrylovResult bicgstab(const SparseMatrixR& A, const double* b, double* x, const 
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; ++i) p[i] = r[i] + beta * (p[i] - omega * v[i]);
     M.apply(p, y);
-    double r0v = 0, vv = 0;
-    multiplyDots(A, y, v, r0, r0v, vv);
+    double r0v = 0, unused = 0;
+    multiplyDots<false>(A, y, v, r0, r0v, unused);
     if (r0v == 0 || !std::isfinite(r0v)) { res.breakdown = true; return res; }
     alpha = rho / r0v;
     double ss = 0;
@@ -139,7 +140,7 @@ KrylovResult bicgstab(const SparseMatrixR& A, const double* b, double* x, const 
     }
     M.apply(s, z);
     double ts = 0, tt = 0;
-    multiplyDots(A, z, t, s, ts, tt);
+    multiplyDots<true>(A, z, t, s, ts, tt);
     if (tt == 0 || !std::isfinite(tt)) { res.breakdown = true; return res; }
     omega = ts / tt;
     if (omega == 0) { res.breakdown = true; return res; }
