@@ -105,6 +105,17 @@ struct ShiftTerm : EffectAt<D, EffectStage::shift> {
   virtual void addShift(const FlowState<D>&, std::vector<Vec<D>>& dr) = 0;
 };
 
+// A shift term whose settings are one parameter struct P (read from its dictionary).
+template <int D, class P>
+class ShiftTermWith : public ShiftTerm<D> {
+ public:
+  ShiftTermWith(std::string name, const P& p) : ShiftTerm<D>(std::move(name)), par_(p) {}
+  const P& parameters() const { return par_; }
+
+ protected:
+  P par_;
+};
+
 // Named creators. Built-in effects are added by registerBuiltinEffects() (one
 // explicit list: static libraries drop self-registering objects).
 template <int D>

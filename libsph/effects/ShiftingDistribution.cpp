@@ -60,12 +60,12 @@ inline double power(double x, double p, int whole) {
 
 template <int D>
 std::string ShiftingDistribution<D>::describe() const {
-  if (par_.type == DistributionParameters::Type::DPS)
-    return cat("type DPS (eq. 14), C = ", par_.C, " (shift length C h), neighbours within 1.1 sqrt(D) d0",
-               ", projected where |sum V grad W| h >= ", par_.projectionThreshold);
-  return cat("type OPS (eqs. 11-13), C = ", par_.C, " (times h^2), Rp = ", par_.Rp, ", np = ", par_.np,
-             ", gradient ", gradientName(par_.gradient), ", projected where |sum V grad W| h >= ",
-             par_.projectionThreshold);
+  if (this->par_.type == DistributionParameters::Type::DPS)
+    return cat("type DPS (eq. 14), C = ", this->par_.C, " (shift length C h), neighbours within 1.1 sqrt(D) d0",
+               ", projected where |sum V grad W| h >= ", this->par_.projectionThreshold);
+  return cat("type OPS (eqs. 11-13), C = ", this->par_.C, " (times h^2), Rp = ", this->par_.Rp, ", np = ", this->par_.np,
+             ", gradient ", gradientName(this->par_.gradient), ", projected where |sum V grad W| h >= ",
+             this->par_.projectionThreshold);
 }
 
 template <int D>
@@ -75,13 +75,13 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
   const auto& nrm = s.particles.normal;
   const auto& rho = s.particles.density;
   const double V = s.V(), h = s.h, invRho0 = 1.0 / s.rho0;
-  const bool ops = par_.type == DistributionParameters::Type::OPS;
+  const bool ops = this->par_.type == DistributionParameters::Type::OPS;
   const double invW0 = 1.0 / s.kernel.w(s.d0);
-  const double coeff = ops ? -par_.C * h * h * V : par_.C * h * V;
+  const double coeff = ops ? -this->par_.C * h * h * V : this->par_.C * h * V;
   const double rStar = 1.1 * std::sqrt(double(D)) * s.d0;
   const bool haveWeights = !s.weights.gradW.empty() && !s.weights.order.empty();
   const bool haveGradC = s.gradC.size() == s.size();
-  const int wholeNp = (par_.np == std::floor(par_.np) && par_.np >= 0 && par_.np <= 16) ? int(par_.np) : -1;
+  const int wholeNp = (this->par_.np == std::floor(this->par_.np) && this->par_.np >= 0 && this->par_.np <= 16) ? int(this->par_.np) : -1;
   const long n = long(s.size());
   long count = 0;
 #pragma omp parallel for schedule(static) reduction(+ : count)
@@ -93,12 +93,12 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     // whose support reaches past the surface. Deeper vicinity particles have a full
     // neighbourhood and an ill-defined normal: they shift like interior ones.
     const bool deepVicinity =
-        cls == SurfaceClass::vicinity && haveGradC && s.gradC[i].norm() * h < par_.projectionThreshold;
+        cls == SurfaceClass::vicinity && haveGradC && s.gradC[i].norm() * h < this->par_.projectionThreshold;
     const bool project = cls != SurfaceClass::interior && !deepVicinity;
     const Vec<D> ni = nrm.size() == s.size() ? nrm[i] : Vec<D>::Zero();
     if (project && ni.squaredNorm() < 0.25) continue;
     // Particles without SPH(2) weights fall back to the kernel gradient.
-    const G grad = (haveWeights && s.weights.order[i] != 255) ? par_.gradient : G::kernel;
+    const G grad = (haveWeights && s.weights.order[i] != 255) ? this->par_.gradient : G::kernel;
     const double Ci = rho[i] * invRho0;
     Vec<D> sum = Vec<D>::Zero();
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
@@ -107,7 +107,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
       if (ops) {
         double wv, dw;
         s.kernel.eval(r, wv, dw);
-        const double clump = par_.Rp * power(wv * invW0, par_.np, wholeNp);
+        const double clump = this->par_.Rp * power(wv * invW0, this->par_.np, wholeNp);
         const Vec<D> gradW = (dw / r) * nl.rij[k];
         switch (grad) {
           case G::kernel: sum += (1.0 + clump) * gradW; break;

@@ -50,15 +50,14 @@ struct DistributionParameters {
 };
 
 template <int D>
-class ShiftingDistribution final : public ShiftTerm<D> {
+class ShiftingDistribution final : public ShiftTermWith<D, DistributionParameters> {
  public:
-  explicit ShiftingDistribution(const DistributionParameters& p) : ShiftTerm<D>("shifting/distribution"), par_(p) { this->needs_.normals = true; }
+  explicit ShiftingDistribution(const DistributionParameters& p)
+      : ShiftTermWith<D, DistributionParameters>("shifting/distribution", p) {
+    this->needs_.normals = true;
+  }
   std::string describe() const override;
   void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
-  const DistributionParameters& parameters() const { return par_; }
-
- private:
-  DistributionParameters par_;
 };
 
 }  // namespace shizuku

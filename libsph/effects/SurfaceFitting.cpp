@@ -38,9 +38,9 @@ std::unique_ptr<Effect<D>> makeSurfaceFitting(const Dictionary& d, const FlowSta
 
 template <int D>
 std::string SurfaceFitting<D>::describe() const {
-  return cat("C = ", par_.C, " (shift C h s n), gates 0 < |kappa| d0 < ", par_.maxCurvature, ", ",
-             par_.minDistance, " < |s|/d0 < ", par_.maxDistance, ", curvatureFactor ", par_.curvatureFactor,
-             ", sign ", par_.smoothingSign ? "smoothing (toward the fitted surface)" : "asPrinted");
+  return cat("C = ", this->par_.C, " (shift C h s n), gates 0 < |kappa| d0 < ", this->par_.maxCurvature, ", ",
+             this->par_.minDistance, " < |s|/d0 < ", this->par_.maxDistance, ", curvatureFactor ", this->par_.curvatureFactor,
+             ", sign ", this->par_.smoothingSign ? "smoothing (toward the fitted surface)" : "asPrinted");
 }
 
 template <int D>
@@ -48,16 +48,16 @@ void SurfaceFitting<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr)
   this->actionCount_ = 0;
   if (s.fitDistance.size() != s.size()) return;  // no fit this step
   const auto& nrm = s.fitNormal;
-  const double coeff = (par_.smoothingSign ? -1.0 : 1.0) * par_.C * s.h;
+  const double coeff = (this->par_.smoothingSign ? -1.0 : 1.0) * this->par_.C * s.h;
   const long n = long(s.size());
   long count = 0;
 #pragma omp parallel for schedule(static) reduction(+ : count)
   for (long i = 0; i < n; ++i) {
     if (!s.isFluid(i) || !isFreeSurfaceClass(s.surfaceClass(i))) continue;
     const double si = s.fitDistance[i];
-    if (!(std::abs(si) > par_.minDistance && std::abs(si) < par_.maxDistance)) continue;  // NaN fails
-    const double kappa = std::abs(par_.curvatureFactor * curvatureSum(s, std::size_t(i)));
-    if (!(kappa > 0 && kappa < par_.maxCurvature)) continue;
+    if (!(std::abs(si) > this->par_.minDistance && std::abs(si) < this->par_.maxDistance)) continue;  // NaN fails
+    const double kappa = std::abs(this->par_.curvatureFactor * curvatureSum(s, std::size_t(i)));
+    if (!(kappa > 0 && kappa < this->par_.maxCurvature)) continue;
     dr[i] += (coeff * si) * nrm[i];
     ++count;
   }

@@ -25,18 +25,15 @@ struct SurfaceFittingParameters {
 };
 
 template <int D>
-class SurfaceFitting final : public ShiftTerm<D> {
+class SurfaceFitting final : public ShiftTermWith<D, SurfaceFittingParameters> {
  public:
-  explicit SurfaceFitting(const SurfaceFittingParameters& p) : ShiftTerm<D>("shifting/surfaceFitting"), par_(p) {
+  explicit SurfaceFitting(const SurfaceFittingParameters& p)
+      : ShiftTermWith<D, SurfaceFittingParameters>("shifting/surfaceFitting", p) {
     this->needs_.normals = true;
     this->needs_.surfaceFit = true;
   }
   std::string describe() const override;
   void addShift(const FlowState<D>& s, std::vector<Vec<D>>& dr) override;
-  const SurfaceFittingParameters& parameters() const { return par_; }
-
- private:
-  SurfaceFittingParameters par_;
 };
 
 }  // namespace shizuku
