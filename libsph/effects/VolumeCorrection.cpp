@@ -6,18 +6,14 @@
 
 namespace shizuku {
 
-namespace {
-namespace key {
+namespace key {  // const: internal linkage
 const ParameterGroup volume("system/sphSchemes: shifting/volumeCorrection",
     "Volume-conservation shift of interior particles, eq. 17 (docs/method.md 7).");
 const ScalarParameter C = volume.scalar("C", dim::none, "coefficient C_vol (shift = C h sum ...)").def(0.1).min(0).max(1);
 }  // namespace key
-}  // namespace
 
 template <int D>
-std::unique_ptr<Effect<D>> makeVolumeCorrection(const Dictionary& d, const FlowState<D>&) {
-  return std::make_unique<VolumeCorrection<D>>(key::C.read(d));
-}
+std::unique_ptr<Effect<D>> makeVolumeCorrection(const Dictionary& d, const FlowState<D>&) { return std::make_unique<VolumeCorrection<D>>(key::C.read(d)); }
 
 template <int D>
 std::string VolumeCorrection<D>::describe() const {

@@ -5,17 +5,13 @@
 
 namespace shizuku {
 
-namespace {
-namespace key {
+namespace key {  // const: internal linkage
 const ParameterGroup xsph("system/sphSchemes: xsph", "XSPH advection velocity near the free surface (docs/method.md 10).");
 const ScalarParameter epsilon = xsph.scalar("epsilon", dim::none, "XSPH coefficient").def(0.5).min(0).max(1);
 }  // namespace key
-}  // namespace
 
 template <int D>
-std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& d, const FlowState<D>&) {
-  return std::make_unique<XSPH<D>>(key::epsilon.read(d));
-}
+std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& d, const FlowState<D>&) { return std::make_unique<XSPH<D>>(key::epsilon.read(d)); }
 
 template <int D>
 void XSPH<D>::addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<D>>& u,
