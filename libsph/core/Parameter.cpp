@@ -90,12 +90,6 @@ double ScalarParameter::read(const Dictionary& d) const {
   return readScalar(*info_, d, info_->defaultNumber, info_->dimension, false);
 }
 
-double ScalarParameter::read(const Dictionary* d) const {
-  if (d) return read(*d);
-  recordParameter(*info_, nullptr, info_->defaultText(), true);
-  return info_->defaultNumber;
-}
-
 double ScalarParameter::readOr(const Dictionary& d, double def) const {
   return readScalar(*info_, d, def, info_->dimension, true);
 }
@@ -129,12 +123,6 @@ int IntParameter::read(const Dictionary& d) const {
   return v;
 }
 
-int IntParameter::read(const Dictionary* d) const {
-  if (d) return read(*d);
-  recordParameter(*info_, nullptr, info_->defaultText(), true);
-  return int(info_->defaultNumber);
-}
-
 bool SwitchParameter::read(const Dictionary& d) const {
   const std::string key = presentKeyword(*info_, d);
   if (key.empty()) {
@@ -148,12 +136,6 @@ bool SwitchParameter::read(const Dictionary& d) const {
   return v;
 }
 
-bool SwitchParameter::read(const Dictionary* d) const {
-  if (d) return read(*d);
-  recordParameter(*info_, nullptr, info_->defaultText(), true);
-  return info_->defaultSwitch;
-}
-
 std::string OptionParameter::read(const Dictionary& d) const {
   const std::string key = presentKeyword(*info_, d);
   if (key.empty()) {
@@ -165,12 +147,6 @@ std::string OptionParameter::read(const Dictionary& d) const {
   const std::string v = d.getOption(key, info_->options);
   recordParameter(*info_, &d, v, false);
   return v;
-}
-
-std::string OptionParameter::read(const Dictionary* d) const {
-  if (d) return read(*d);
-  recordParameter(*info_, nullptr, info_->defaultText(), true);
-  return info_->defaultWord;
 }
 
 std::vector<std::string> WordListParameter::read(const Dictionary& d) const {

@@ -89,6 +89,15 @@ std::vector<std::string> parameterScopes();
 std::string keywordTableMarkdown(const std::string& scope);  // "" for an unknown scope
 std::string keywordTablesMarkdown();                         // every scope, each under a heading
 
+// The keyword under which `info` is written in `d` (itself or an old spelling,
+// with a warning), or "" when absent. Marks what it looks at as read.
+std::string presentKeyword(const ParameterInfo& info, const Dictionary& d);
+// Record a value read or defaulted.
+void recordParameter(const ParameterInfo& info, const Dictionary* d, const std::string& value, bool defaulted,
+                     bool computed = false);
+// Range checks; `key` is the keyword as written.
+void checkRange(const ParameterInfo& info, const Dictionary& d, const std::string& key, double value);
+
 // Common part of the typed handles below: the fluent setters and the lookup of
 // the keyword, or one of its old spellings, in a dictionary.
 template <class Self>
@@ -104,16 +113,13 @@ class ParameterHandle {
  protected:
   ParameterInfo* info_;
   Self& self() { return static_cast<Self&>(*this); }
+  // An absent sub-dictionary (a null dictionary): the default, recorded for -dryRun.
+  template <class T>
+  T absent(T def) const {
+    recordParameter(*info_, nullptr, info_->defaultText(), true);
+    return def;
+  }
 };
-
-// The keyword under which `info` is written in `d` (itself or an old spelling,
-// with a warning), or "" when absent. Marks what it looks at as read.
-std::string presentKeyword(const ParameterInfo& info, const Dictionary& d);
-// Record a value read or defaulted.
-void recordParameter(const ParameterInfo& info, const Dictionary* d, const std::string& value, bool defaulted,
-                     bool computed = false);
-// Range checks; `key` is the keyword as written.
-void checkRange(const ParameterInfo& info, const Dictionary& d, const std::string& key, double value);
 
 class ScalarParameter : public ParameterHandle<ScalarParameter> {
  public:
@@ -127,7 +133,7 @@ class ScalarParameter : public ParameterHandle<ScalarParameter> {
   // The value in `d`, or the default when absent (a required keyword missing is an error).
   double read(const Dictionary& d) const;
   // A null dictionary (an absent sub-dictionary) gives the default.
-  double read(const Dictionary* d) const;
+  double read(const Dictionary* d) const { return d ? read(*d) : absent(info_->defaultNumber); }
   // With a default the caller computes from other values (declare shownDefault()
   // to document it); -dryRun marks it "(default, computed)".
   double readOr(const Dictionary& d, double def) const;
@@ -144,7 +150,7 @@ class IntParameter : public ParameterHandle<IntParameter> {
   IntParameter& min(int v) { info_->min = v; info_->hasMin = true; return *this; }
   IntParameter& max(int v) { info_->max = v; info_->hasMax = true; return *this; }
   int read(const Dictionary& d) const;
-  int read(const Dictionary* d) const;
+  int read(const Dictionary* d) const { return d ? read(*d) : absent(int(info_->defaultNumber)); }
 };
 
 class SwitchParameter : public ParameterHandle<SwitchParameter> {
@@ -152,7 +158,7 @@ class SwitchParameter : public ParameterHandle<SwitchParameter> {
   using ParameterHandle::ParameterHandle;
   SwitchParameter& def(bool v) { info_->defaultSwitch = v; info_->required = false; return *this; }
   bool read(const Dictionary& d) const;
-  bool read(const Dictionary* d) const;
+  bool read(const Dictionary* d) const { return d ? read(*d) : absent(info_->defaultSwitch); }
 };
 
 // A word from a fixed list; a wrong word is an error with "did you mean".
@@ -161,7 +167,7 @@ class OptionParameter : public ParameterHandle<OptionParameter> {
   using ParameterHandle::ParameterHandle;
   OptionParameter& def(const std::string& v) { info_->defaultWord = v; info_->required = false; return *this; }
   std::string read(const Dictionary& d) const;
-  std::string read(const Dictionary* d) const;
+  std::string read(const Dictionary* d) const { return d ? read(*d) : absent(info_->defaultWord); }
 };
 
 class WordListParameter : public ParameterHandle<WordListParameter> {

@@ -107,11 +107,12 @@ template <int D>
 void IsphStep<D>::correct() {
   StageTimers::Scope t(timers_, st_.corrector);
   auto& P = s_.particles;
-  Ops<D>::gradient(s_.neighbours, s_.weights, s_.dt / s_.rho0 * s_.V(), P.pressure, gradP_, &s_.isFluidMask);
   const long n = long(s_.size());
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i)
-    if (s_.isFluid(i)) P.velocity[i] = s_.uStar[i] - gradP_[i];
+    if (s_.isFluid(i)) P.velocity[i] = s_.uStar[i];
+  // u + (-c) <grad p> is u - c <grad p> to the last bit (negation is exact).
+  Ops<D>::addGradient(s_.neighbours, s_.weights, -(s_.dt / s_.rho0 * s_.V()), P.pressure, P.velocity, s_.isFluidMask);
 }
 
 template <int D>

@@ -83,7 +83,7 @@ class IsphStep {
   // Scratch (sized once).
   std::vector<double> source_;
   std::vector<std::uint8_t> weightRows_;
-  std::vector<Vec<D>> du_, gradP_;
+  std::vector<Vec<D>> du_;
 };
 
 }  // namespace shizuku

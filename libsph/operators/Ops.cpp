@@ -12,6 +12,13 @@ void Ops<D>::gradient(const NeighbourList<D>& nl, const PairWeights<D>& pw, doub
 }
 
 template <int D>
+void Ops<D>::addGradient(const NeighbourList<D>& nl, const PairWeights<D>& pw, double scale,
+                         const std::vector<double>& f, std::vector<Vec<D>>& out, const RowMask& rows) {
+  sumOverNeighbours(nl, &rows, scale, true, out,
+                    [&](long i, Index k) -> Vec<D> { return (f[nl.j[k]] - f[i]) * pw.gradW[k]; });
+}
+
+template <int D>
 void Ops<D>::divergence(const NeighbourList<D>& nl, const PairWeights<D>& pw, double scale,
                         const std::vector<Vec<D>>& u, std::vector<double>& out, const RowMask* rows) {
   sumOverNeighbours(nl, rows, scale, false, out,

@@ -52,6 +52,9 @@ template <int D>
 struct Ops {
   static void gradient(const NeighbourList<D>& nl, const PairWeights<D>& pw, double scale,
                        const std::vector<double>& f, std::vector<Vec<D>>& out, const RowMask* rows = nullptr);
+  // out[i] += scale <grad f>_i on the rows `rows` selects.
+  static void addGradient(const NeighbourList<D>& nl, const PairWeights<D>& pw, double scale,
+                          const std::vector<double>& f, std::vector<Vec<D>>& out, const RowMask& rows);
   static void divergence(const NeighbourList<D>& nl, const PairWeights<D>& pw, double scale,
                          const std::vector<Vec<D>>& u, std::vector<double>& out, const RowMask* rows = nullptr);
   static void laplacian(const NeighbourList<D>& nl, const PairWeights<D>& pw, double scale,
