@@ -58,6 +58,11 @@ class IsphStep {
   StepReport& report() { return report_; }
   const StepReport& report() const { return report_; }
   long ppeFallbacks() const { return ppeFallbacks_; }
+  // Whether the next step uses no solver state built in earlier steps (a lagged AMG
+  // hierarchy), so that a run stopped now restarts bit for bit; and a request that it
+  // uses none (docs/reliability.md, "Restart is exact").
+  bool nextStepStartsAfresh() const { return scheme_.ppe->solver().nextSolveStartsAfresh(); }
+  void startAfreshAtNextStep() { scheme_.ppe->startAfreshAtNextSolve(); }
   // The stages in execution order with their parameters and units, one per line.
   std::vector<std::string> describe() const;
 

@@ -9,7 +9,11 @@ namespace shizuku {
 
 namespace {
 std::atomic<int> receivedSignal{0};
-extern "C" void onStopSignal(int sig) { receivedSignal = sig; }
+std::atomic<int> signalCount{0};
+extern "C" void onStopSignal(int sig) {
+  receivedSignal = sig;
+  ++signalCount;
+}
 }  // namespace
 
 void installStopSignalHandlers() {
@@ -20,6 +24,7 @@ void installStopSignalHandlers() {
 }
 bool stopRequested() { return receivedSignal != 0; }
 int stopSignal() { return receivedSignal; }
+int stopSignalCount() { return signalCount; }
 
 ControlDictWatch::ControlDictWatch(const std::string& controlDictPath)
     : path_(controlDictPath), stamp_(std::filesystem::last_write_time(path_)) {}

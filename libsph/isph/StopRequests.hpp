@@ -12,7 +12,8 @@ namespace shizuku {
 // file-size limit becomes a write error (EFBIG), not a kill.
 void installStopSignalHandlers();
 bool stopRequested();
-int stopSignal();  // the signal received, 0 if none
+int stopSignal();       // the last signal received, 0 if none
+int stopSignalCount();  // how many stop signals have been received
 
 class ControlDictWatch {
  public:

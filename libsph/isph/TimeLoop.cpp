@@ -122,17 +122,12 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
   particleSteps += fluidCount_;
   step_.analyse();
   step_.report().maxSpeed = guard_.check(s_, "after the step", files_.dir);
-  const bool writeNow = rc_.isWriteStep(s_.time, s_.step) || atEnd();
-  bool stopNow = false;
-  if (watch.writeNowRequested()) {
-    stopNow = true;
-    info(cat("stopAt writeNow read from system/controlDict: writing time ", s_.time, " and stopping"));
-  }
-  if (stopRequested()) {
-    stopNow = true;
-    info(cat("signal ", stopSignal(), " received: writing time ", s_.time, " and stopping"));
-  }
+  const bool scheduled = rc_.isWriteStep(s_.time, s_.step);
+  const bool writeNow = scheduled || atEnd();
+  const bool stopNow = stopDue(watch);
   if (writeNow || stopNow) writeTime(stopNow ? "stop requested" : "write interval");
+  // A restart from a scheduled write then rebuilds what the uninterrupted run rebuilds.
+  if (scheduled) step_.startAfreshAtNextStep();
   const double wall = clockSeconds() - wallStart;
   runFunctionObjects(writtenAtCurrentTime_, wall, particleSteps);
   if (s_.step % rc_.progressInterval == 0 || stopNow || atEnd()) {
@@ -146,6 +141,31 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
     info(progressLine(p, step_.report()));
   }
   return stopNow;
+}
+
+// A stop request (a signal, `stopAt writeNow`) is honoured at the end of the first step
+// after which the pressure solver keeps nothing from earlier steps (at most amgReuse - 1
+// steps later), so that the state written restarts bit for bit; a further signal, or
+// the end time, stops at once.
+template <int D>
+bool TimeLoop<D>::stopDue(ControlDictWatch& watch) {
+  if (stopRequest_.empty()) {
+    if (watch.writeNowRequested()) stopRequest_ = "stopAt writeNow read from system/controlDict";
+    else if (stopRequested()) stopRequest_ = cat("signal ", stopSignal(), " received");
+    else return false;
+    signalsAtRequest_ = stopSignalCount();
+  }
+  const bool insisted = stopSignalCount() > signalsAtRequest_;
+  if (insisted || atEnd() || step_.nextStepStartsAfresh()) {
+    info(cat(stopRequest_, insisted ? cat(", then signal ", stopSignal(), " (stopping at once)") : "",
+             ": writing time ", s_.time, " and stopping"));
+    return true;
+  }
+  if (!stopDeferralLogged_)
+    info(cat(stopRequest_, " at time ", s_.time, ": going on to the end of the pressure preconditioner's reuse "
+             "cycle (at most amgReuse - 1 steps), so that a restart continues exactly; a second signal stops at once"));
+  stopDeferralLogged_ = true;
+  return false;
 }
 
 template <int D>

@@ -33,6 +33,8 @@ class TimeLoop {
   void start();
   // One step with its check, writes and function objects; true when the run must stop.
   bool advanceOneStep(double& previousDt, double& particleSteps, double wallStart, ControlDictWatch& watch);
+  // Whether a stop request is due now (see the .cpp).
+  bool stopDue(ControlDictWatch& watch);
   void writeLastGoodState(const NumericalError& e);
   void writeTime(const std::string& reason);
   void runFunctionObjects(bool isWriteTime, double wall, double particleSteps);
@@ -49,6 +51,9 @@ class TimeLoop {
   int functionObjectTimer_, outputTimer_;
   std::vector<std::string> written_;
   bool writtenAtCurrentTime_ = false;
+  std::string stopRequest_;  // what asked the run to stop (empty: nothing yet)
+  int signalsAtRequest_ = 0;
+  bool stopDeferralLogged_ = false;
   double startTime_ = 0, span_ = 1;
   double fluidCount_ = 0;
 };

@@ -32,7 +32,8 @@ class AggregationAMG final : public Preconditioner {
   std::string describe() const override;
   bool setup(const SparseMatrixR& A) override;
   void apply(const double* r, double* z) const override;
-  void numberingChanged() override { stale_ = true; }
+  bool nextSetupRebuilds() const override { return stale_ || sinceSetup_ >= reuse_ || levels_.empty(); }
+  void rebuildAtNextSetup() override { stale_ = true; }
   void solved(int iterations) override;
   int levels() const { return int(levels_.size()); }
   long setups() const { return setups_; }

@@ -59,7 +59,8 @@ class HypreBoomerAMG final : public Preconditioner {
     return cat("AMG (hypre BoomerAMG V-cycle, one core", reuse_ > 1 ? cat(", hierarchy kept up to ", reuse_, " steps") : "",
                ")");
   }
-  void numberingChanged() override { stale_ = true; }
+  bool nextSetupRebuilds() const override { return stale_ || sinceSetup_ >= reuse_; }
+  void rebuildAtNextSetup() override { stale_ = true; }
   void solved(int iterations) override {
     if (sinceSetup_ == 1) setupIterations_ = iterations;
     else if (iterations > 1.5 * setupIterations_ + 2) stale_ = true;

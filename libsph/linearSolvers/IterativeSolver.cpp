@@ -71,7 +71,8 @@ class BiCGSTABSolver final : public LinearSolver {
     if (!r.ok) fallback(A, b, x, r);
     return r;
   }
-  void numberingChanged() override { pc_->numberingChanged(); }
+  bool nextSolveStartsAfresh() const override { return pc_->nextSetupRebuilds(); }
+  void startAfreshAtNextSolve() override { pc_->rebuildAtNextSetup(); }
 
  private:
   // BiCGSTAB can stagnate or break down; a direct LU solves this step rather

@@ -11,7 +11,7 @@
 // this interface, and built by create(); the pressure equation does not change.
 // Contract of every backend:
 //   - deterministic: the same matrix, right-hand side, initial guess x and reuse
-//     state (a kept preconditioner or symbolic analysis, and numberingChanged()
+//     state (a kept preconditioner or symbolic analysis, and startAfreshAtNextSolve()
 //     calls) give the same x bit for bit on the same number of threads (or ranks):
 //     sums in a fixed order, no dependence on timing (no dynamic schedules or
 //     atomics in reductions). A restart from a time directory then continues
@@ -45,9 +45,12 @@ class LinearSolver {
   virtual std::string describe() const = 0;
   // Solve A x = b; x holds the initial guess on entry (iterative solvers).
   virtual LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
-  // The unknowns were renumbered (particles reordered): state kept from earlier
-  // matrices (a lagged preconditioner) must be rebuilt.
-  virtual void numberingChanged() {}
+  // State kept from earlier matrices (a lagged AMG hierarchy) cannot be rebuilt by a
+  // restart. nextSolveStartsAfresh(): the next solve uses none of it, so a run stopped
+  // before it restarts bit for bit; startAfreshAtNextSolve(): make the next solve
+  // rebuild it (the unknowns were renumbered, or a time directory was written).
+  virtual bool nextSolveStartsAfresh() const { return true; }
+  virtual void startAfreshAtNextSolve() {}
   // Build from the `pressure` sub-dictionary of system/sphSolution (nullptr: defaults).
   static std::unique_ptr<LinearSolver> create(const Dictionary* dict);
   static std::vector<std::string> names();

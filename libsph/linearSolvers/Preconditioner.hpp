@@ -30,9 +30,13 @@ class Preconditioner {
   virtual bool setup(const SparseMatrixR& A) = 0;
   // z = M^{-1} r over all rows (called from outside a parallel region; parallel inside).
   virtual void apply(const double* r, double* z) const = 0;
-  // Preconditioners kept across steps (AMG): the rows were renumbered; and the
-  // iteration count of the solve that just used it.
-  virtual void numberingChanged() {}
+  // Preconditioners kept across steps (AMG) hold state built from an earlier step's
+  // matrix, which a restart cannot rebuild. nextSetupRebuilds(): the next setup()
+  // builds afresh from its own matrix (a run stopped here restarts bit for bit);
+  // rebuildAtNextSetup(): make it do so (the rows were renumbered, or a time directory
+  // was written). solved(): the iteration count of the solve that just used it.
+  virtual bool nextSetupRebuilds() const { return true; }
+  virtual void rebuildAtNextSetup() {}
   virtual void solved(int iterations) {}
 };
 

@@ -13,7 +13,7 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
   const auto& P = s.particles;
   if (ids_.size() != P.id.size() || !std::equal(ids_.begin(), ids_.end(), P.id.begin())) {
     ids_ = P.id;
-    solver_->numberingChanged();
+    solver_->startAfreshAtNextSolve();
   }
   pinned_ = !anyDirichlet && numUnknowns_ > 0;
   fillRows(s, source);

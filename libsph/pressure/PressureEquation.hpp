@@ -22,6 +22,8 @@ class PressureEquation {
  public:
   explicit PressureEquation(std::unique_ptr<LinearSolver> solver) : solver_(std::move(solver)) {}
   const LinearSolver& solver() const { return *solver_; }
+  // The next solve rebuilds whatever the solver keeps from earlier steps (restart exactness).
+  void startAfreshAtNextSolve() { solver_->startAfreshAtNextSolve(); }
   // source[i] = b_i for fluid rows (rho/dt <div u*>_i plus stabilization terms).
   void assemble(const FlowState<D>& s, const std::vector<double>& source);
   // Solves and writes particles.pressure (p = 0 where not an unknown).
