@@ -2,7 +2,14 @@
 // 0 < |r_ij| < radius in CSR form, O(N), minimum image in periodic directions.
 //
 // build(): (1) a uniform grid over the bounding box (periodic directions: over
-// the periodic box, cell size L/floor(L/radius)), cell size >= radius;
+// the periodic box, cell size L/floor(L/radius)), cell size >= radius. Where a
+// few particles far from the rest (spray, a droplet in free flight) would make
+// that grid hold far more cells than particles, the grid covers the bulk only
+// (the 0.5 % to 99.5 % quantiles of each coordinate, widened) and a particle
+// outside it goes to the nearest edge cell: clamping cell coordinates never
+// moves two cells further apart, so every pair within the radius is still in
+// the same or adjacent cells, and the grid's size does not grow with the
+// distance of the far particles;
 // (2) counting sort of particles by cell (wrapped positions copied in cell
 // order for locality); (3) parallel scan over cells: each thread appends the
 // (cell-order) indices of the neighbours found to its own buffer and records
@@ -59,6 +66,7 @@ struct NeighbourSearch<D>::Impl {
   std::vector<Vec<D>> xs;        // wrapped positions in cell order
   std::vector<Index> cursor;     // per-cell fill cursor of the counting sort
   std::vector<Index> rank;       // position of particle i in cell order
+  std::vector<double> coordinate;// scratch for the quantiles of the bulk box
   // scan results: per-thread lists of neighbour positions (cell order), and
   // where the row of particle i starts in which thread's list
   std::vector<std::vector<Index>> found;
@@ -66,6 +74,11 @@ struct NeighbourSearch<D>::Impl {
   std::vector<std::uint8_t> rowThread;
 
   void setupGrid(const std::vector<Vec<D>>& x, double radius, const PeriodicBox<D>& box);
+  // Number of cells of a grid of cell size cs over [mn, mx] (periodic: the box).
+  double cellsFor(const Vec<D>& mn, const Vec<D>& mx, double cs, const PeriodicBox<D>& box) const;
+  // The box of the bulk of the particles: per direction the quantiles q and 1 - q
+  // of the coordinate, widened by a tenth of their distance and the radius.
+  void bulkBox(const std::vector<Vec<D>>& x, double radius, Vec<D>& mn, Vec<D>& mx);
   void sortByCell(const std::vector<Vec<D>>& x, const PeriodicBox<D>& box);
   // After the scan (row lengths summed into out.offset): the rows, sorted by j.
   template <class MinImage>
@@ -102,10 +115,12 @@ void NeighbourSearch<D>::Impl::setupGrid(const std::vector<Vec<D>>& x, double ra
   if (!finite) throw NumericalError("neighbour search: non-finite particle position");
   if (n == 0) mn = mx = Vec<D>::Zero();
 
-  // Cell size >= radius; enlarged if the grid would have far more cells than
-  // particles (e.g. a few particles far away), which keeps the search correct
-  // (any cell size >= radius is) and the memory bounded.
+  // Cell size >= radius. A grid with far more cells than particles (a few
+  // particles far away) covers the bulk only; if even that is too fine (a
+  // sparse cloud), the cells are enlarged, which keeps the search correct (any
+  // cell size >= radius is) and the memory bounded.
   const double maxCells = std::min(8.0 * double(n) + 4096.0, double(1 << 30));
+  if (cellsFor(mn, mx, radius, box) > maxCells) bulkBox(x, radius, mn, mx);
   double cs = radius;
   for (;;) {
     double total = 1;
@@ -141,6 +156,34 @@ void NeighbourSearch<D>::Impl::setupGrid(const std::vector<Vec<D>>& x, double ra
 }
 
 template <int D>
+double NeighbourSearch<D>::Impl::cellsFor(const Vec<D>& mn, const Vec<D>& mx, double cs,
+                                          const PeriodicBox<D>& box) const {
+  double total = 1;
+  for (int a = 0; a < D; ++a)
+    total *= box.periodic[a] ? std::max(1.0, std::floor((box.hi[a] - box.lo[a]) / cs))
+                             : std::floor((mx[a] - mn[a]) / cs) + 1;
+  return total;
+}
+
+template <int D>
+void NeighbourSearch<D>::Impl::bulkBox(const std::vector<Vec<D>>& x, double radius, Vec<D>& mn, Vec<D>& mx) {
+  constexpr double q = 0.005;
+  const std::size_t n = x.size();
+  coordinate.resize(n);
+  const std::size_t lo = std::size_t(q * double(n - 1)), hi = n - 1 - lo;
+  for (int a = 0; a < D; ++a) {
+    for (std::size_t i = 0; i < n; ++i) coordinate[i] = x[i][a];
+    std::nth_element(coordinate.begin(), coordinate.begin() + lo, coordinate.end());
+    const double low = coordinate[lo];
+    std::nth_element(coordinate.begin(), coordinate.begin() + hi, coordinate.end());
+    const double high = coordinate[hi];
+    const double widen = 0.1 * (high - low) + radius;
+    mn[a] = std::max(mn[a], low - widen);
+    mx[a] = std::min(mx[a], high + widen);
+  }
+}
+
+template <int D>
 void NeighbourSearch<D>::Impl::sortByCell(const std::vector<Vec<D>>& x, const PeriodicBox<D>& box) {
   const Index n = Index(x.size());
   cellOf.resize(n);
@@ -153,9 +196,9 @@ void NeighbourSearch<D>::Impl::sortByCell(const std::vector<Vec<D>>& x, const Pe
     if (anyPeriodic) box.wrap(p);
     std::int64_t c = 0;
     for (int a = 0; a < D; ++a) {
-      int k = int((p[a] - lo[a]) * invCell[a]);
-      k = std::min(std::max(k, 0), nc[a] - 1);
-      c += k * stride[a];
+      // Clamped before the conversion: a particle outside the grid goes to the edge cell.
+      const double k = std::min(std::max((p[a] - lo[a]) * invCell[a], 0.0), double(nc[a] - 1));
+      c += std::int64_t(k) * stride[a];
     }
     cellOf[i] = Index(c);
   }
@@ -355,6 +398,12 @@ std::vector<Index> NeighbourSearch<D>::cellOrder(const std::vector<Vec<D>>& x) {
   impl_->sortByCell(x, box_);
   return impl_->sorted;
 }
+
+template <int D>
+std::int64_t NeighbourSearch<D>::numCells() const { return impl_->numCells; }
+
+template <int D>
+double NeighbourSearch<D>::cellSize(int a) const { return 1.0 / impl_->invCell[a]; }
 
 // ---------------------------------------------------------------- reference
 template <int D>

@@ -50,6 +50,10 @@ class NeighbourSearch {
   // A permutation that sorts particles by cell (for memory locality):
   // new index k holds old particle perm[k].
   std::vector<Index> cellOrder(const std::vector<Vec<D>>& x);
+  // The grid of the last build (diagnostics, tests): number of cells and the cell
+  // edge along direction a.
+  std::int64_t numCells() const;
+  double cellSize(int a) const;
 
  private:
   double radius_;

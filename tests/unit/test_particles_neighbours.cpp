@@ -2,7 +2,8 @@
 // O(N^2) brute force on random 2D/3D sets, with and without periodic
 // directions (minimum image across the boundary), no self pairs, rows sorted
 // by j, identical for 1 and 2 threads, cellOrder a permutation sorted by cell,
-// rebuilds reuse the buffers, bad periodic boxes are rejected.
+// rebuilds reuse the buffers, bad periodic boxes are rejected; particles far
+// from the rest (spray) change neither the pairs nor the grid's cell size.
 #define BOOST_TEST_MODULE particles_neighbours
 #include <boost/test/unit_test.hpp>
 
@@ -70,6 +71,43 @@ BOOST_AUTO_TEST_CASE(equals_brute_force_2d_3d) {
   compareWithBruteForce<2>(500, 0.3, {}, 2);
   compareWithBruteForce<3>(3000, 0.12, {}, 3);
   compareWithBruteForce<3>(200, 0.7, {}, 4);  // a single cell in each direction
+}
+
+// A bulk of particles plus far ones: alone, in pairs within the radius, along
+// every axis and on both sides, up to 1e12 m away. The pairs equal the brute
+// force (clamping far particles into edge cells loses none), and the grid keeps
+// cells of the search radius over the bulk instead of growing with the distance.
+template <int D>
+void farParticles(double distance) {
+  const double radius = 0.04;
+  auto x = randomPoints<D>(4000, 0.0, 1.0, 11);
+  for (int a = 0; a < D; ++a)
+    for (double side : {-1.0, 1.0}) {
+      Vec<D> far = Vec<D>::Constant(0.5);
+      far[a] += side * distance;
+      x.push_back(far);
+      far[(a + 1) % D] += 0.5 * radius;  // a neighbour of the far particle
+      x.push_back(far);
+      far[a] += 3 * radius;  // and one just out of reach of both
+      x.push_back(far);
+    }
+  NeighbourSearch<D> search(radius);
+  NeighbourList<D> nl, ref;
+  search.build(x, nl);
+  bruteForceNeighbours(x, radius, {}, ref);
+  BOOST_TEST_MESSAGE("D=" << D << " far at " << distance << " m: " << search.numCells() << " cells of "
+                          << search.cellSize(0) << " m");
+  checkEqual(nl, ref);
+  checkRows(nl, radius);
+  for (int a = 0; a < D; ++a) BOOST_TEST(search.cellSize(a) == radius);
+  BOOST_TEST(double(search.numCells()) <= std::pow(1.3 / radius + 2, D));
+}
+
+BOOST_AUTO_TEST_CASE(far_particles_keep_the_grid_and_the_pairs) {
+  for (double distance : {10.0, 1e4, 1e12}) {
+    farParticles<2>(distance);
+    farParticles<3>(distance);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(periodic_equals_brute_force) {
