@@ -21,6 +21,7 @@
 #include <boost/program_options.hpp>
 #include <ctime>
 #include <iostream>
+#include <new>
 #include <omp.h>
 #include <unistd.h>
 
@@ -84,7 +85,7 @@ int main(int argc, char** argv) {
       ("noFunctionObjects", "run without function objects")
       ("keywords", po::value<std::string>(), "print the declared keywords and exit: markdown (tables) or scopes")
       ("scope", po::value<std::string>()->default_value(""), "with -keywords markdown: only this dictionary scope")
-      ("threads", po::value<int>()->default_value(0), "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
+      ("threads", po::value<int>(), "OpenMP threads, 1 to 4 x the hardware threads (default: OMP_NUM_THREADS or all cores)");
   installStopSignalHandlers();  // a signal during a long set-up stops cleanly too
   po::variables_map vm;
   if (auto status = parseCommandLine(argc, argv, "shizuku", desc, vm,
@@ -96,7 +97,7 @@ int main(int argc, char** argv) {
   }
   if (vm.count("keywords")) return printKeywords(vm["keywords"].as<std::string>(), vm["scope"].as<std::string>());
   const std::string dir = vm["case"].as<std::string>();
-  if (vm["threads"].as<int>() > 0) omp_set_num_threads(vm["threads"].as<int>());
+  if (auto status = applyThreadsOption(vm, "shizuku")) return *status;
 
   std::string command;
   for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
@@ -122,6 +123,12 @@ int main(int argc, char** argv) {
   } catch (const NumericalError& e) {
     Log::get().error(e.what());
     return 2;
+  } catch (const std::bad_alloc&) {
+    // Set-up checks the memory before allocating particles (particles/MemoryCheck.hpp);
+    // anything that still runs out ends here, with every time directory already written kept.
+    Log::get().error(cat("out of memory: an allocation failed in case '", dir, "'; the case needs more memory than "
+                         "the machine (or ulimit -v) gives: use a larger spacing or fewer particles"));
+    return 1;
   } catch (const std::exception& e) {
     Log::get().error(e.what());
     return 1;

@@ -110,18 +110,21 @@ int main(int argc, char** argv) {
       ("time", po::value<std::string>()->default_value(""),
        "times: 0.1,0.2 | 0.1:0.5 | :0.5 | 0.5: | latestTime | firstTime | all (default: every saved time)")
       ("overwrite", "replace postProcessing/<func>/<first time>/ if it exists")
-      ("threads", po::value<int>()->default_value(0), "OpenMP threads (default: OMP_NUM_THREADS or all cores)");
+      ("threads", po::value<int>(), "OpenMP threads, 1 to 4 x the hardware threads (default: OMP_NUM_THREADS or all cores)");
   po::variables_map vm;
   if (auto status = parseCommandLine(argc, argv, "shizukuPostProcess", desc, vm,
                                      "Exit status: 0 success, 1 bad input.\n", "func"))
     return *status;
-  if (vm["threads"].as<int>() > 0) omp_set_num_threads(vm["threads"].as<int>());
+  if (auto status = applyThreadsOption(vm, "shizukuPostProcess")) return *status;
   const std::string dir = vm["case"].as<std::string>();
   try {
     const int dimension = caseDimension(dir);
     const std::string func = vm["func"].as<std::string>(), times = vm["time"].as<std::string>();
     return dimension == 3 ? postProcess<3>(dir, func, times, vm.count("overwrite"))
                           : postProcess<2>(dir, func, times, vm.count("overwrite"));
+  } catch (const std::bad_alloc&) {
+    Log::get().error("out of memory: an allocation failed in case '" + dir + "'");
+    return 1;
   } catch (const std::exception& e) {
     Log::get().error(e.what());
     return 1;

@@ -3,8 +3,10 @@
 // `--case DIR`), one error format and one -help behaviour.
 // Programs that use it link Boost::program_options.
 #pragma once
+#include <algorithm>
 #include <boost/program_options.hpp>
 #include <iostream>
+#include <omp.h>
 #include <optional>
 #include <string>
 
@@ -33,6 +35,27 @@ inline std::optional<int> parseCommandLine(int argc, char** argv, const std::str
     std::cout << desc << "\n" << helpFooter;
     return 0;
   }
+  return std::nullopt;
+}
+
+// The largest -threads accepted: four times the hardware threads (oversubscription
+// beyond that only slows a run down, and 1e5 threads crash the OpenMP runtime), and
+// never above the runtime's own limit (OMP_THREAD_LIMIT).
+inline int maxThreads() { return std::max(1, std::min(4 * omp_get_num_procs(), omp_get_thread_limit())); }
+
+// The -threads option (declared without a default: absent means OMP_NUM_THREADS or all
+// cores): checked to lie in 1 .. maxThreads() and applied. Returns 1 after printing an
+// error naming the option, else nullopt.
+inline std::optional<int> applyThreadsOption(const boost::program_options::variables_map& vm,
+                                             const std::string& program) {
+  if (!vm.count("threads")) return std::nullopt;
+  const int n = vm["threads"].as<int>();
+  if (n < 1 || n > maxThreads()) {
+    std::cerr << program << ": option -threads " << n << " is out of range: give 1 to " << maxThreads()
+              << " (four times the " << omp_get_num_procs() << " hardware threads)\n";
+    return 1;
+  }
+  omp_set_num_threads(n);
   return std::nullopt;
 }
 

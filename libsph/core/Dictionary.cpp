@@ -14,9 +14,9 @@ namespace {
 
 std::string describeValue(const DictValue& v) {
   switch (v.kind) {
-    case DictValue::Kind::word: return "the word '" + v.text + "'";
-    case DictValue::Kind::string: return "the string \"" + v.text + "\"";
-    case DictValue::Kind::number: return "the number " + v.text;
+    case DictValue::Kind::word: return "the word '" + echoed(v.text) + "'";
+    case DictValue::Kind::string: return "the string \"" + echoed(v.text) + "\"";
+    case DictValue::Kind::number: return "the number " + echoed(v.text);
     case DictValue::Kind::list: return "a list of " + std::to_string(v.items.size()) + " items";
     case DictValue::Kind::dict: return "a sub-dictionary";
   }
@@ -87,7 +87,7 @@ SourceLocation Dictionary::location(const std::string& key) const {
 }
 
 void Dictionary::error(const std::string& key, const std::string& message) const {
-  throw InputError(location(key).str() + ": keyword '" + key + "': " + message);
+  throw InputError(location(key).str() + ": keyword '" + echoed(key) + "': " + message);
 }
 
 void Dictionary::markRead(const std::string& key) const { queried_.insert(key); }
@@ -114,7 +114,7 @@ double Dictionary::getScalarOr(const std::string& key, double def, Dimension d) 
 int Dictionary::getInt(const std::string& key) const {
   const DictValue& v = require(key, "an integer");
   const double x = numberOf(key, v, dim::none);
-  if (x != std::floor(x) || std::abs(x) > 2147483647.0) error(key, "expected an integer, found " + v.text);
+  if (x != std::floor(x) || std::abs(x) > 2147483647.0) error(key, "expected an integer, found " + echoed(v.text));
   return int(x);
 }
 
@@ -215,7 +215,7 @@ std::string Dictionary::getOption(const std::string& key, const std::vector<std:
     error(key, "expected one of: " + list + "; found " + describeValue(v));
   if (std::find(options.begin(), options.end(), v.text) != options.end()) return v.text;
   const std::string near = closestMatch(v.text, options);
-  error(key, "'" + v.text + "' is not one of: " + list + (near.empty() ? "" : "; did you mean '" + near + "'?"));
+  error(key, "'" + echoed(v.text) + "' is not one of: " + list + (near.empty() ? "" : "; did you mean '" + near + "'?"));
 }
 
 std::string Dictionary::getOptionOr(const std::string& key, const std::vector<std::string>& options,
@@ -276,7 +276,7 @@ void Dictionary::checkAllRead() const {
   for (const auto& key : order_) {
     if (!queried_.count(key)) {
       std::vector<std::string> known(queried_.begin(), queried_.end());
-      std::string m = location(key).str() + ": unknown keyword '" + key + "'";
+      std::string m = location(key).str() + ": unknown keyword '" + echoed(key) + "'";
       const std::string near = closestMatch(key, known);
       if (!near.empty()) {
         m += "; did you mean '" + near + "'?";

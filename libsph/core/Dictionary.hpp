@@ -35,7 +35,8 @@ namespace shizuku {
 struct SourceLocation {
   std::string file;
   int line = 0, column = 0;
-  std::string str() const;  // "file:line:column"
+  std::string includedFrom;  // "" or "FILE:LINE:COLUMN[, included from ...]" of the #include
+  std::string str() const;   // "file:line:column" [" (included from FILE:LINE:COLUMN)"]
 };
 
 // One parsed value: a token tree.
@@ -133,6 +134,11 @@ template <int D> std::string formatNumber(const Vec<D>& v) {
 
 // Closest candidate by edit distance (case-insensitive), or "" if none is close.
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
+
+// A token as echoed in a message: at most kEchoedChars characters of it, a longer one
+// cut with "... (N characters)". Every message quoting user text goes through this.
+constexpr std::size_t kEchoedChars = 80;
+std::string echoed(const std::string& token);
 
 // Parse a unit such as "cm", "g/cm^3", "cm/s^2", "kPa": SI factor and dimension.
 // Throws InputError (message without location) for an unknown unit.

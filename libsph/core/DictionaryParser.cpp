@@ -8,6 +8,7 @@
 #include "core/Dictionary.hpp"
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,20 +18,16 @@ namespace shizuku {
 
 namespace {
 
-std::string where(const std::string& file, int line, int col) {
-  return SourceLocation{file, line, col}.str();
-}
-
 // A text file: no NUL byte, no control character other than white space,
 // valid UTF-8. Anything else is reported as a binary file.
-void checkText(const std::string& text, const std::string& file) {
+void checkText(const std::string& text, const std::string& fileNamed) {
   int line = 1;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const unsigned char c = text[i];
     if (c == '\n') { ++line; continue; }
     if (c == 0 || (c < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v') || c == 0x7f) {
       std::ostringstream m;
-      m << "file '" << file << "' is not a text file (binary byte 0x" << std::hex << int(c)
+      m << fileNamed << " is not a text file (binary byte 0x" << std::hex << int(c)
         << std::dec << " at line " << line << ")";
       throw InputError(m.str());
     }
@@ -39,7 +36,7 @@ void checkText(const std::string& text, const std::string& file) {
     bool ok = extra > 0 && c != 0xc0 && c != 0xc1 && c <= 0xf4;
     for (int k = 1; ok && k <= extra; ++k) ok = i + k < text.size() && (((unsigned char)text[i + k]) >> 6) == 0x2;
     if (!ok)
-      throw InputError("file '" + file + "' is not a text file (invalid UTF-8 at line " +
+      throw InputError(fileNamed + " is not a text file (invalid UTF-8 at line " +
                        std::to_string(line) + ")");
     i += extra;
   }
@@ -88,17 +85,20 @@ struct Token {
 std::string describe(const Token& t) {
   switch (t.type) {
     case Token::end: return "the end of the file";
-    case Token::string: return "\"" + t.text + "\"";
-    case Token::unit: return "[" + t.text + "]";
-    case Token::macro: return "$" + t.text;
-    case Token::directive: return "#" + t.text;
-    default: return "'" + t.text + "'";
+    case Token::string: return "\"" + echoed(t.text) + "\"";
+    case Token::unit: return "[" + echoed(t.text) + "]";
+    case Token::macro: return "$" + echoed(t.text);
+    case Token::directive: return "#" + echoed(t.text);
+    default: return "'" + echoed(t.text) + "'";
   }
 }
 
 class Lexer {
  public:
-  Lexer(std::string text, std::string file) : text_(std::move(text)), file_(std::move(file)) {}
+  Lexer(std::string text, std::string file, std::string includedFrom = "")
+      : text_(std::move(text)), file_(std::move(file)), includedFrom_(std::move(includedFrom)) {
+    if (text_.compare(0, 3, "\xef\xbb\xbf") == 0) pos_ = 3;  // a UTF-8 byte-order mark at the start is skipped
+  }
   const std::string& file() const { return file_; }
   const Token& peek() {
     if (!hasPeek_) { peeked_ = lex(); hasPeek_ = true; }
@@ -112,10 +112,10 @@ class Lexer {
     return t;
   }
   // Position just after the last token returned by next().
-  SourceLocation lastEnd() const { return {file_, lastLine_, lastColumn_}; }
+  SourceLocation lastEnd() const { return {file_, lastLine_, lastColumn_, includedFrom_}; }
 
  private:
-  std::string text_, file_;
+  std::string text_, file_, includedFrom_;
   std::size_t pos_ = 0;
   int line_ = 1, column_ = 1, lastLine_ = 1, lastColumn_ = 1;
   bool hasPeek_ = false;
@@ -143,7 +143,7 @@ class Lexer {
         const int l = line_, c = column_;
         advance(); advance();
         while (!done() && !(at() == '*' && at(1) == '/')) advance();
-        if (done()) throw InputError(where(file_, l, c) + ": comment '/*' is never closed (missing '*/')");
+        if (done()) throw InputError(SourceLocation{file_, l, c, includedFrom_}.str() + ": comment '/*' is never closed (missing '*/')");
         advance(); advance();
       } else {
         return;
@@ -153,14 +153,52 @@ class Lexer {
 
   std::string wordChars() {
     std::string s;
-    while (!done() && !delimiter(at()) && !commentStart()) { s += at(); advance(); }
+    while (!done() && !delimiter(at()) && !commentStart()) {
+      if ((unsigned char)at() >= 0x80) nonAscii(s);
+      s += at();
+      advance();
+    }
     return s;
+  }
+
+  // Keywords, numbers, units and macro names are ASCII; a non-ASCII character there (a
+  // no-break space pasted from a web page, a typographic quote) is named with its code
+  // point. Comments and "strings" may hold any UTF-8 (checkText has validated it).
+  [[noreturn]] void nonAscii(const std::string& before) const {
+    const unsigned char c = at();
+    const int extra = c >= 0xf0 ? 3 : c >= 0xe0 ? 2 : 1;
+    unsigned code = c & (0x3f >> extra);
+    for (int k = 1; k <= extra; ++k) code = (code << 6) | ((unsigned char)at(k) & 0x3f);
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "U+%04X", code);
+    const std::string name = characterName(code);
+    throw InputError(SourceLocation{file_, line_, column_, includedFrom_}.str() + ": non-ASCII character " + hex +
+                     (name.empty() ? "" : " (" + name + ")") +
+                     (before.empty() ? "" : " after '" + echoed(before) + "'") +
+                     "; keywords, numbers and units must be plain ASCII (only comments and \"strings\" may hold "
+                     "other characters)");
+  }
+
+  static std::string characterName(unsigned code) {
+    switch (code) {
+      case 0x00a0: return "no-break space";
+      case 0x00b5: return "micro sign";
+      case 0x2009: return "thin space";
+      case 0x200b: return "zero-width space";
+      case 0x2013: return "en dash";
+      case 0x2018: case 0x2019: return "typographic single quote";
+      case 0x201c: case 0x201d: return "typographic double quote";
+      case 0x2212: return "minus sign; write the ASCII '-'";
+      case 0x3000: return "ideographic space";
+      case 0xfeff: return "byte-order mark";
+      default: return "";
+    }
   }
 
   Token lex() {
     skipSpaceAndComments();
     Token t;
-    t.where = {file_, line_, column_};
+    t.where = {file_, line_, column_, includedFrom_};
     if (done()) {
       t.type = Token::end;
     } else {
@@ -226,10 +264,10 @@ class Lexer {
 class DictionaryParser {
  public:
   static Dictionary parse(const std::string& text, const std::string& file) {
-    checkText(text, file);
+    checkText(text, "file '" + file + "'");
     Dictionary root;
     root.name_ = file;
-    root.where_ = {file, 0, 0};
+    root.where_ = {file, 0, 0, ""};
     DictionaryParser p;
     p.scope_.push_back(&root);
     Lexer lex(text, file);
@@ -264,7 +302,7 @@ class DictionaryParser {
   }
 
   [[noreturn]] static void fail(const SourceLocation& at, const std::string& key, const std::string& what) {
-    throw InputError(at.str() + ": " + (key.empty() ? "" : "keyword '" + key + "': ") + what);
+    throw InputError(at.str() + ": " + (key.empty() ? "" : "keyword '" + echoed(key) + "': ") + what);
   }
 
   // Entries until '}' (open != nullptr) or the end of the file.
@@ -288,10 +326,10 @@ class DictionaryParser {
           // `$name;` merges the named dictionary into this one.
           const Token semi = lex.next();
           if (semi.type != Token::semicolon)
-            fail(lex.lastEnd(), "", "expected ';' after $" + t.text + ", found " + describe(semi));
+            fail(lex.lastEnd(), "", "expected ';' after $" + echoed(t.text) + ", found " + describe(semi));
           DictValue v = expand(t, "", d.name_);
           if (v.kind != DictValue::Kind::dict)
-            fail(t.where, "", "$" + t.text + " names a value, not a dictionary: only a dictionary can stand alone as an entry");
+            fail(t.where, "", "$" + echoed(t.text) + " names a value, not a dictionary: only a dictionary can stand alone as an entry");
           for (const auto& k : v.dict->order_)
             add(d, k, v.dict->entries_.at(k), v.dict->keyLocation_.at(k));
           break;
@@ -373,9 +411,9 @@ class DictionaryParser {
         v.kind = DictValue::Kind::number;
         v.number = t.numberValue;
         if (!std::isfinite(v.number))
-          fail(t.where, key, "the number " + t.text + " is out of range (a double holds up to about 1.8e308)");
+          fail(t.where, key, "the number " + echoed(t.text) + " is out of range (a double holds up to about 1.8e308)");
         if (underflows(t.text, v.number))
-          fail(t.where, key, "the number " + t.text + " is out of range (too small: a double holds down to about "
+          fail(t.where, key, "the number " + echoed(t.text) + " is out of range (too small: a double holds down to about "
                              "2.2e-308, and this would read as " + (v.number == 0 ? "0" : "a denormal") + ")");
         break;
       case Token::word: v.kind = DictValue::Kind::word; return v;
@@ -410,8 +448,8 @@ class DictionaryParser {
         break;
       }
       case Token::rparen: fail(t.where, key, "unexpected ')' with no matching '('");
-      case Token::unit: fail(t.where, key, "a unit [" + t.text + "] must follow a number or a list");
-      case Token::directive: fail(t.where, key, "#" + t.text + " may only stand where a keyword may");
+      case Token::unit: fail(t.where, key, "a unit [" + echoed(t.text) + "] must follow a number or a list");
+      case Token::directive: fail(t.where, key, "#" + echoed(t.text) + " may only stand where a keyword may");
       default: fail(t.where, key, "expected a value, found " + describe(t));
     }
     if (lex.peek().type == Token::unit) {
@@ -445,12 +483,12 @@ class DictionaryParser {
     if (v.kind == DictValue::Kind::number) {
       v.number *= unit.factor;
       if (!std::isfinite(v.number) || underflows(v.text, v.number))
-        fail(u.where, key, "the number " + v.text + " [" + u.text + "] is out of range in SI units");
+        fail(u.where, key, "the number " + echoed(v.text) + " [" + echoed(u.text) + "] is out of range in SI units");
     } else if (v.kind == DictValue::Kind::list) {
       for (auto& item : v.items) applyUnit(item, unit, u, key);
     } else {
       fail(u.where, key, "a unit [" + u.text + "] applies to numbers, but the list holds " +
-           (v.kind == DictValue::Kind::dict ? std::string("a dictionary") : "'" + v.text + "'"));
+           (v.kind == DictValue::Kind::dict ? std::string("a dictionary") : "'" + echoed(v.text) + "'"));
     }
     v.hasUnit = true;
     v.unitDim = unit.dim;
@@ -464,7 +502,7 @@ class DictionaryParser {
     std::stringstream ss(t.text);
     for (std::string p; std::getline(ss, p, '/');)
       if (!p.empty()) parts.push_back(p);
-    if (parts.empty()) fail(t.where, key, "empty macro name $" + t.text);
+    if (parts.empty()) fail(t.where, key, "empty macro name $" + echoed(t.text));
     const DictValue* v = nullptr;
     Dictionary* owner = nullptr;
     for (auto it = scope_.rbegin(); it != scope_.rend() && !v; ++it) {
@@ -480,7 +518,7 @@ class DictionaryParser {
     owner->queried_.insert(parts[0]);
     for (std::size_t k = 1; k < parts.size(); ++k) {
       if (v->kind != DictValue::Kind::dict)
-        fail(t.where, key, "macro $" + t.text + ": '" + parts[k - 1] + "' is not a dictionary");
+        fail(t.where, key, "macro $" + echoed(t.text) + ": '" + parts[k - 1] + "' is not a dictionary");
       const Dictionary& sub = *v->dict;
       auto e = sub.entries_.find(parts[k]);
       if (e == sub.entries_.end()) notFound(t, key, parts[k], sub.order_);
@@ -493,7 +531,7 @@ class DictionaryParser {
 
   [[noreturn]] static void notFound(const Token& t, const std::string& key, const std::string& part,
                                     const std::vector<std::string>& candidates) {
-    std::string m = "macro $" + t.text + " not found ('" + part + "' is not defined before it)";
+    std::string m = "macro $" + echoed(t.text) + " not found ('" + part + "' is not defined before it)";
     const std::string near = closestMatch(part, candidates);
     if (!near.empty()) {
       std::string fixed = t.text;
@@ -552,30 +590,39 @@ class DictionaryParser {
   void directive(Lexer& lex, Dictionary& d, const Token& t) {
     const bool optional = t.text == "includeIfPresent";
     if (t.text != "include" && !optional) {
-      std::string m = "unknown directive '#" + t.text + "'";
+      std::string m = "unknown directive '#" + echoed(t.text) + "'";
       const std::string near = closestMatch(t.text, {"include", "includeIfPresent"});
       fail(t.where, "", m + (near.empty() ? " (known: #include, #includeIfPresent)"
                                           : "; did you mean '#" + near + "'?"));
     }
     const Token f = lex.next();
     if (f.type != Token::string && f.type != Token::word)
-      fail(f.where, "", "expected a quoted file name after #" + t.text + ", found " + describe(f));
+      fail(f.where, "", "expected a quoted file name after #" + echoed(t.text) + ", found " + describe(f));
     if (lex.peek().type == Token::semicolon) lex.next();
     std::filesystem::path file(f.text);
     if (file.is_relative()) file = std::filesystem::path(lex.file()).parent_path() / file;
     const std::string resolved = file.lexically_normal().string();
     std::string text;
+    std::error_code ec;
+    if (std::filesystem::exists(resolved, ec) && !std::filesystem::is_regular_file(resolved, ec))
+      fail(t.where, "", "#" + t.text + " \"" + echoed(f.text) + "\": '" + resolved + "' is not a regular file (a directory?)");
     if (!readFile(resolved, text)) {
       if (optional) return;
-      fail(t.where, "", "#include \"" + f.text + "\": cannot open file '" + resolved + "'");
+      fail(t.where, "", "#include \"" + echoed(f.text) + "\": cannot open file '" + resolved + "'");
     }
     if (++includes_ > kMaxIncludes)
       fail(t.where, "", "more than " + std::to_string(kMaxIncludes) + " #include directives in one dictionary");
     if (includeDepth_ >= 32)
-      fail(t.where, "", "#include \"" + f.text + "\" nested more than 32 deep (does a file include itself?)");
-    checkText(text, resolved);
+      fail(t.where, "", "#include \"" + echoed(f.text) + "\" nested more than 32 deep (does a file include itself?)");
+    // Every location inside the included file names this #include (and its own chain).
+    // Two levels of the chain are named, deeper ones summarised (an include loop is 32 deep).
+    std::string from = SourceLocation{t.where.file, t.where.line, t.where.column, ""}.str();
+    const std::string& up = t.where.includedFrom;
+    const std::size_t second = up.find(", included from ");
+    if (!up.empty()) from += ", included from " + (second == std::string::npos ? up : up.substr(0, second) + ", ...");
+    checkText(text, "file '" + resolved + "' (included from " + from + ")");
     ++includeDepth_;
-    Lexer sub(std::move(text), resolved);
+    Lexer sub(std::move(text), resolved, from);
     parseBody(sub, d, nullptr, "");
     --includeDepth_;
   }
@@ -585,8 +632,9 @@ class DictionaryParser {
 };
 
 std::string SourceLocation::str() const {
-  if (line <= 0) return file;
-  return file + ":" + std::to_string(line) + ":" + std::to_string(column);
+  const std::string from = includedFrom.empty() ? "" : " (included from " + includedFrom + ")";
+  if (line <= 0) return file + from;
+  return file + ":" + std::to_string(line) + ":" + std::to_string(column) + from;
 }
 
 Dictionary Dictionary::fromString(const std::string& text, const std::string& name) {
@@ -604,7 +652,7 @@ Dictionary Dictionary::fromFileIfPresent(const std::string& path) {
   if (!std::filesystem::exists(path, ec)) {
     Dictionary d;
     d.name_ = path;
-    d.where_ = {path, 0, 0};
+    d.where_ = {path, 0, 0, ""};
     return d;
   }
   return fromFile(path);

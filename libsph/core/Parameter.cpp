@@ -27,8 +27,8 @@ std::string withUnit(const std::string& value, const ParameterInfo& info) {
 std::string asWritten(const ParameterInfo& info, const Dictionary& d, const std::string& key, double value) {
   const DictValue& v = d.value(key);
   if (v.kind != DictValue::Kind::number) return withUnit(formatNumber(value), info);
-  if (!v.hasUnit) return v.text;
-  return v.text + " [" + v.unitText + "] (" + withUnit(formatNumber(value), info) + ")";
+  if (!v.hasUnit) return echoed(v.text);
+  return echoed(v.text) + " [" + v.unitText + "] (" + withUnit(formatNumber(value), info) + ")";
 }
 
 }  // namespace
@@ -64,6 +64,8 @@ void checkRange(const ParameterInfo& info, const Dictionary& d, const std::strin
   if (info.hasMax && !info.maxInclusive && !(value < info.max)) fail("must be less than", info.max);
   if (info.sane > 0 && std::abs(value) > info.sane)
     fail("is beyond the physically sane magnitude", info.sane);
+  if (info.saneLow > 0 && value != 0 && std::abs(value) < info.saneLow)
+    fail("is below the physically sane magnitude", info.saneLow);
 }
 
 // --- scalars -------------------------------------------------------------------

@@ -20,7 +20,8 @@
 // velocities, accelerations, viscosities, densities, pressures, rates), unless
 // the declaration sets another with sane(); dimensionless numbers and integers
 // have none beyond their min/max. The bound catches unit slips and typos
-// (nu 1e300) without constraining any real case.
+// (nu 1e300) without constraining any real case. A quantity that cannot be tiny
+// (a density: p ~ rho g H underflows) declares a lower one with saneMin().
 //
 // Usage (namespace scope in the reader's .cpp):
 //   const ParameterGroup controlDict("system/controlDict", "run control");
@@ -53,6 +54,7 @@ struct ParameterInfo {
   bool hasMin = false, hasMax = false;
   bool minInclusive = true, maxInclusive = true;
   double sane = 0;                        // |value| <= sane when > 0
+  double saneLow = 0;                     // a nonzero |value| >= saneLow when > 0
   std::vector<std::string> options;       // option
   std::vector<std::string> oldNames;      // earlier spellings, still read with a warning
   std::string scope;                      // set by the group
@@ -130,6 +132,8 @@ class ScalarParameter : public ParameterHandle<ScalarParameter> {
   ScalarParameter& max(double v) { info_->max = v; info_->hasMax = true; info_->maxInclusive = true; return *this; }
   ScalarParameter& below(double v) { max(v); info_->maxInclusive = false; return *this; }
   ScalarParameter& sane(double magnitude) { info_->sane = magnitude; return *this; }
+  // A lower sane magnitude, for a quantity whose smallness makes derived values underflow.
+  ScalarParameter& saneMin(double magnitude) { info_->saneLow = magnitude; return *this; }
   // The value in `d`, or the default when absent (a required keyword missing is an error).
   double read(const Dictionary& d) const;
   // A null dictionary (an absent sub-dictionary) gives the default.

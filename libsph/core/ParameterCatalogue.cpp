@@ -74,6 +74,7 @@ std::string ParameterInfo::rangeText() const {
   } else {
     return type == ParameterType::integer ? "any integer" : "any finite";
   }
+  if (saneLow > 0) s += ", not below " + formatNumber(saneLow);
   return s + u;
 }
 

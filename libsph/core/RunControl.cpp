@@ -2,6 +2,7 @@
 // once below (keyword, default, range, meaning; docs/dictionaries.md is generated
 // from these declarations).
 #include "core/RunControl.hpp"
+#include "core/Log.hpp"
 #include "core/Parameter.hpp"
 #include <cmath>
 
@@ -23,6 +24,9 @@ const OptionParameter stopAt = controlDict.option("stopAt", {"endTime", "writeNo
 const ScalarParameter endTime = controlDict.scalar("endTime", dim::time, "end time (>= startTime)").required();
 const ScalarParameter deltaT = controlDict.scalar("deltaT", dim::time,
     "time step (the first step with adjustTimeStep)").required().min(1e-12);
+const ScalarParameter minDeltaT = controlDict.scalar("minDeltaT", dim::time,
+    "smallest step the time loop takes; a smaller one (or one with t + dt == t) stops the run with exit 2")
+    .def(0).shownDefault("1e-6 deltaT").above(0);
 const SwitchParameter adjustTimeStep = controlDict.onOff("adjustTimeStep",
     "adapt the step to maxCo, viscosity, gravity and maxDeltaT").def(false);
 const ScalarParameter maxCo = controlDict.scalar("maxCo", dim::none,
@@ -41,6 +45,19 @@ const IntParameter progressInterval = controlDict.integer("progressInterval",
 
 
 }  // namespace key
+
+// t + deltaT must differ from t in double precision, at the start time and, with a fixed
+// step, at the end time (the largest time reached); otherwise the run stands still.
+void checkDeltaTAdvances(const Dictionary& d, const RunControl& rc) {
+  auto stuck = [&](double t) { return !(t + rc.deltaT > t); };
+  const char* which = stuck(rc.startTime) ? "startTime" : !rc.adjustTimeStep && stuck(rc.endTime) ? "endTime" : "";
+  if (which[0] == '\0') return;
+  const double t = which[0] == 's' ? rc.startTime : rc.endTime;
+  d.error("deltaT", cat("deltaT ", rc.deltaT, " s does not advance the time at ", which, " ", t,
+                        " s in double precision (", which, " + deltaT == ", which, "; the smallest step that does is about ",
+                        std::nextafter(t, INFINITY) - t, " s)"));
+}
+
 }  // namespace
 
 RunControl RunControl::read(const Dictionary& d) {
@@ -51,9 +68,12 @@ RunControl RunControl::read(const Dictionary& d) {
   rc.endTime = key::endTime.read(d);
   rc.deltaT = key::deltaT.read(d);
   if (rc.endTime < rc.startTime) d.error("endTime", "must be >= startTime");
+  rc.minDeltaT = key::minDeltaT.readOr(d, 1e-6 * rc.deltaT);
+  if (rc.minDeltaT > rc.deltaT) d.error("minDeltaT", cat("must not exceed deltaT ", rc.deltaT, " s"));
   rc.adjustTimeStep = key::adjustTimeStep.read(d);
   rc.maxCo = key::maxCo.read(d);
   rc.maxDeltaT = key::maxDeltaT.read(d);
+  checkDeltaTAdvances(d, rc);
   const std::string wc = key::writeControl.read(d);
   rc.writeControl = wc == "timeStep" ? WriteControl::timeStep
                     : wc == "runTime" ? WriteControl::runTime : WriteControl::adjustableRunTime;

@@ -1,5 +1,5 @@
 // Run control from system/controlDict (docs/design.md 1.2): reads startFrom, startTime,
-// stopAt, endTime, deltaT, adjustTimeStep, maxCo, maxDeltaT, writeControl,
+// stopAt, endTime, deltaT, minDeltaT, adjustTimeStep, maxCo, maxDeltaT, writeControl,
 // writeInterval, writeFormat, progressInterval (declared in RunControl.cpp);
 // functions { ... } and healthChecks { ... } are read elsewhere.
 // The controlDict is re-read while running (reread()), so editing `stopAt writeNow;` stops a run.
@@ -20,6 +20,7 @@ struct RunControl {
   StopAt stopAt{};
   double endTime{};
   double deltaT{};
+  double minDeltaT{};  // the time loop refuses a smaller step (isph/TimeStepFloor.hpp)
   bool adjustTimeStep{};
   double maxCo{};
   double maxDeltaT{};

@@ -7,7 +7,10 @@ namespace shizuku {
 namespace {
 namespace key {
 const ParameterGroup properties("constant/physicalProperties", "The fluid's density and viscosity.");
-const ScalarParameter rho = properties.scalar("rho", dim::density, "density").required().above(0);
+// A density below 1e-3 kg/m^3 (far below any liquid, or a gas at ordinary pressure) makes
+// every pressure (p ~ rho g H) and the PPE's right-hand side so small that the run goes on
+// with p = 0 (docs/reliability.md).
+const ScalarParameter rho = properties.scalar("rho", dim::density, "density").required().above(0).saneMin(1e-3);
 const ScalarParameter nu = properties.scalar("nu", dim::kinematicViscosity, "kinematic viscosity (0: no viscous term is built)")
     .def(0).min(0);
 const OptionParameter wallCondition = properties.option("wallCondition", {"noSlip", "slip"},

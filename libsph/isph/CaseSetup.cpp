@@ -18,6 +18,23 @@ const OptionParameter derivatives = schemes.option("derivatives", {"SPH2", "corr
 const IntParameter reorderInterval = schemes.integer("reorderInterval",
     "steps between cell reorderings of the particles (0: never)").def(20).min(0);
 }  // namespace key
+
+// The neighbour search (minimum image) needs each periodic length to be at least twice
+// the kernel support 2h, or a particle would meet a neighbour and its image: the error
+// names particlesDict's periodic box and the spacing and ratio that set h.
+template <int D>
+void checkPeriodicLength(const Dictionary& particlesDict, const FlowState<D>& s) {
+  const char* axes[] = {"x", "y", "z"};
+  const double support = s.kernel.support(), need = 2 * support;
+  for (int k = 0; k < D; ++k) {
+    const double L = s.periodic.hi[k] - s.periodic.lo[k];
+    if (s.periodic.periodic[k] && !(L >= need))
+      particlesDict.subDict("periodic").error("max", cat("the periodic length in ", axes[k], " (", L,
+          " m) is shorter than twice the kernel support 2h = ", support, " m (h = spacing ", s.d0,
+          " m x system/sphSchemes kernel/smoothingLengthRatio ", s.h / s.d0, "): make it at least ", need, " m"));
+  }
+}
+
 }  // namespace
 
 template <int D>
@@ -54,6 +71,7 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
   // its particles are used when the start time has none.
   GeneratedParticles<D> gen = generateParticles<D>(files.particlesDict);
   s.periodic = gen.periodic;
+  checkPeriodicLength(files.particlesDict, s);
   const auto times = listTimeDirectories(files.dir);
   std::string startName;
   if (!postProcessing) {

@@ -5,6 +5,7 @@
 #include "io/TimeName.hpp"
 #include "isph/RunLog.hpp"
 #include "isph/StopRequests.hpp"
+#include "isph/TimeStepFloor.hpp"
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -34,6 +35,8 @@ double TimeLoop<D>::chooseDeltaT(double previous, double nextWrite) {
   StepReport& report = step_.report();
   double dt = rc_.deltaT;
   report.dtLimiter = "fixed";
+  choice_.clear();
+  choice_.add({dt, "fixed"});
   if (rc_.adjustTimeStep) {
     double umax = 0;
     for (std::size_t i = 0; i < s_.size(); ++i)
@@ -46,6 +49,8 @@ double TimeLoop<D>::chooseDeltaT(double previous, double nextWrite) {
         {previous > 0 ? 1.2 * previous : rc_.deltaT, "growth"},
     };
     dt = INFINITY;
+    choice_.clear();
+    for (const auto& l : lim) choice_.add(l);
     for (const auto& l : lim)
       if (l.dt < dt) { dt = l.dt; report.dtLimiter = l.name; }
     if (!std::isfinite(dt)) { dt = rc_.deltaT; report.dtLimiter = "deltaT"; }
@@ -117,6 +122,7 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
   }
   guard_.saveGoodState(s_);
   const double dt = chooseDeltaT(previousDt, rc_.nextWriteTime(s_.time));
+  checkTimeStepFloor(s_.time, s_.step, dt, rc_.minDeltaT, step_.report().dtLimiter.c_str(), choice_);
   step_.advance(dt);
   previousDt = dt;
   particleSteps += fluidCount_;

@@ -3,7 +3,7 @@
 // (signals, `stopAt writeNow`), function objects, the progress line and the summary.
 // After a numerical failure it writes the last good state and returns exit status 2.
 // Reads the RunControl of system/controlDict (startTime, endTime, deltaT, adjustTimeStep,
-// maxCo, maxDeltaT, writeControl, writeInterval, writeFormat, progressInterval).
+// maxCo, maxDeltaT, minDeltaT, writeControl, writeInterval, writeFormat, progressInterval).
 #pragma once
 #include "core/RunControl.hpp"
 #include "functionObjects/FunctionObject.hpp"
@@ -11,6 +11,7 @@
 #include "isph/HealthGuard.hpp"
 #include "isph/IsphStep.hpp"
 #include "isph/StopRequests.hpp"
+#include "isph/TimeStepFloor.hpp"
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ class TimeLoop {
   int run(const std::string& pipeline);
   // dt for the next step: fixed, or the smallest of the CFL limit, the effects' limits,
   // maxDeltaT and 1.2 x the previous step, shortened to land on write and end times.
+  // Each step's dt must pass the floor (TimeStepFloor.hpp: minDeltaT, t + dt > t).
   double chooseDeltaT(double previous, double nextWrite);
 
  private:
@@ -56,6 +58,7 @@ class TimeLoop {
   bool stopDeferralLogged_ = false;
   double startTime_ = 0, span_ = 1;
   double fluidCount_ = 0;
+  TimeStepChoice choice_;  // the limits the last chooseDeltaT compared
 };
 
 }  // namespace shizuku

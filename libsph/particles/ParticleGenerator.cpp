@@ -5,6 +5,7 @@
 // muParser expression), and the periodic box. Every rule and key is listed in
 // ParticleGenerator.hpp.
 #include "particles/ParticleGenerator.hpp"
+#include "particles/MemoryCheck.hpp"
 #include "core/Log.hpp"
 #include "core/Parameter.hpp"
 #include <muParser.h>
@@ -32,7 +33,8 @@ std::string countText(double n) { return n < 1e15 ? std::to_string(std::llround(
 // builds). Coordinates have the sane bound 1e12 m; the reach check below ties them
 // to the spacing as well.
 const ParameterGroup particles("system/particlesDict", "Spacing, particle limit and dimension of the initial particles.");
-const ScalarParameter spacing = particles.scalar("spacing", dim::length, "particle spacing d0").required().above(0);
+const ScalarParameter spacing = particles.scalar("spacing", dim::length, "particle spacing d0").required().above(0)
+    .saneMin(1e-9);  // below a nanometre 1/d0^3 and 1/h^D overflow; no continuum case is that fine
 const ScalarParameter maxParticles = particles.scalar("maxParticles", dim::none,
     "largest particle count, checked before anything is allocated").def(kDefaultMaxParticles).min(1).max(2147483647.0);
 const IntParameter dimensionKey = particles.integer("dimension", "2 or 3; selects the 2D or 3D solver")
@@ -397,6 +399,20 @@ void expressionVelocity(const Dictionary& v, const std::vector<Vec<D>>& x, std::
   if (!failure.empty()) v.error("value", failure);
 }
 
+// Each number read was range-checked, but a rotation rate or gradient times a coordinate,
+// or an expression, can still give an absurd speed: every initial speed is held to the
+// sane magnitude of a velocity (1e12 m/s), the error naming the keyword that gave it.
+template <int D>
+void checkInitialSpeeds(const Dictionary& v, const std::string& type, const std::vector<Vec<D>>& x,
+                        const std::vector<Vec<D>>& u) {
+  constexpr double kSaneSpeed = 1e12;
+  for (std::size_t i = 0; i < u.size(); ++i)
+    if (!(u[i].norm() <= kSaneSpeed))
+      v.error(type == "rigidRotation" ? "omega" : type == "linear" ? "gradient" : "value",
+              "gives the initial velocity " + fmt<D>(u[i]) + " m/s at " + fmt<D>(x[i]) +
+                  " m, beyond the physically sane magnitude " + fmt(kSaneSpeed) + " m/s");
+}
+
 template <int D>
 void assignVelocity(const Region<D>& reg, std::vector<Vec<D>>& u) {
   u.assign(reg.points.size(), Vec<D>::Zero());
@@ -430,6 +446,7 @@ void assignVelocity(const Region<D>& reg, std::vector<Vec<D>>& u) {
   } else {
     expressionVelocity<D>(*v, x, u);
   }
+  checkInitialSpeeds<D>(*v, type, x, u);
 }
 
 template <int D>
@@ -540,6 +557,7 @@ void checkTotalCount(const Dictionary& regionsDict, const std::vector<Region<D>>
     regionsDict.error("regions", "the regions would hold " + countText(total) + " particles, more than maxParticles " +
                                      countText(limit) + " (spacing " + fmt(d0) +
                                      " m): use a larger spacing, or raise maxParticles in particlesDict");
+  checkMemoryFor(regionsDict, "regions", total, D);
 }
 
 // The wall particles of every wall region, in file order, without duplicates: a particle

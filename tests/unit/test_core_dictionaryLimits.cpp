@@ -104,3 +104,29 @@ BOOST_AUTO_TEST_CASE(includes_are_bounded) {
   BOOST_TEST_INFO(m);
   BOOST_TEST(contains(m, "many:1001:1: more than 1000 #include directives in one dictionary"));
 }
+
+// A UTF-8 byte-order mark at the start of a file is skipped (editors on Windows write
+// one); any other non-ASCII character outside comments and strings is named.
+BOOST_AUTO_TEST_CASE(byte_order_mark_is_skipped_other_non_ascii_is_named) {
+  const Dictionary d = Dictionary::fromString("\xef\xbb\xbf" "deltaT 1e-3; // caf\xc3\xa9\nname \"caf\xc3\xa9\";", "f");
+  BOOST_TEST(d.getScalar("deltaT", dim::none) == 1e-3);
+  BOOST_TEST(contains(errorOf("deltaT\xc2\xa0 1e-3;"),
+                      "case/system/controlDict:1:7: non-ASCII character U+00A0 (no-break space) after 'deltaT'"));
+  BOOST_TEST(contains(errorOf("a 1;\n\xef\xbb\xbf" "b 2;"), ":2:1: non-ASCII character U+FEFF (byte-order mark)"));
+}
+
+// A huge token is quoted in at most 80 characters, and the did-you-mean search skips it.
+BOOST_AUTO_TEST_CASE(huge_tokens_are_quoted_short) {
+  const std::string word(1000000, 'a');
+  const std::string m = test::errorOf([&] {
+    const Dictionary d = Dictionary::fromString(word + " 1; deltaT 1;", "f");
+    d.getScalar("deltaT", dim::none);
+    d.checkAllRead();
+  });
+  BOOST_TEST_INFO(m.substr(0, 300));
+  BOOST_TEST(contains(m, "unknown keyword '" + std::string(60, 'a') + "... (1000000 characters)'"));
+  BOOST_TEST(m.size() < 300u);
+  BOOST_TEST(echoed(std::string(80, 'b')) == std::string(80, 'b'));
+  BOOST_TEST(closestMatch("deltT", {"endTime", "deltaT"}) == "deltaT");
+  BOOST_TEST(closestMatch(std::string(100, 'x'), {std::string(100, 'x')}).empty());
+}
