@@ -15,24 +15,88 @@
 // those of a live run at the same times (tests/post/). Output goes to
 // postProcessing/<NAME>/<first selected time>/; if that folder exists (a live
 // run or an earlier post-processing wrote it) the program stops unless
-// -overwrite is given. `timing` measures a live run: here it does nothing.
+// -overwrite is given. The output is all or nothing: it is written to
+// <first time>.tmp-<pid>/ and replaces the folder only when every time has been
+// processed; a time that cannot be read is an error naming it, and the folder
+// stays as it was. `timing` measures a live run: here it does nothing.
 // Exit status: 0 success, 1 bad input.
 #include "core/CommandLine.hpp"
 #include "core/Log.hpp"
 #include "functionObjects/FunctionObjectFactory.hpp"
 #include "functionObjects/TimeSelection.hpp"
+#include "io/FileOps.hpp"
 #include "io/TimeDirectory.hpp"
 #include "isph/Simulation.hpp"
 #include <boost/program_options.hpp>
 #include <filesystem>
 #include <iostream>
 #include <omp.h>
+#include <unistd.h>
 
 namespace po = boost::program_options;
 namespace fs = std::filesystem;
 using namespace shizuku;
 
 namespace {
+
+// The output of one post-processing goes to <out>.tmp-<pid> and replaces <out>
+// only when every selected time has been processed: a failure leaves <out> (an
+// earlier run's, or none) as it was and removes the staging folder, and the
+// postProcessing folders it created when they are left empty.
+struct Staging {
+  std::string out, folder, name;  // name: the folder's last part, the function object's "start time"
+  std::vector<std::string> created;
+  bool published = false;
+  explicit Staging(const std::string& target) : out(target) {
+    name = fs::path(out).filename().string() + ".tmp-" + std::to_string(::getpid());
+    folder = fileops::parentOf(out) + "/" + name;
+    removeStaleTemporaries(fileops::parentOf(out));  // leftovers of a killed post-processing
+    for (std::string p = fileops::parentOf(out); !fs::exists(p); p = fileops::parentOf(p)) created.push_back(p);
+  }
+  ~Staging() {
+    if (published) return;
+    fileops::removeTree(folder);
+    std::error_code ec;
+    for (const auto& p : created) fs::remove(p, ec);  // only when empty
+  }
+  void publish() {
+    if (!fileops::isDirectory(out)) fileops::renamePath(folder, out);
+    else if (fileops::exchangePaths(folder, out)) fileops::removeTree(folder);  // atomic; folder: the old output
+    else {
+      fileops::removeTree(out);
+      fileops::renamePath(folder, out);
+    }
+    published = true;
+  }
+};
+
+// Runs `object` over the selected times, its files named by `startName`. A time
+// that cannot be read is an InputError naming it.
+template <int D>
+void processTimes(Simulation<D>& sim, FunctionObject<D>& object, const std::vector<std::pair<double, std::string>>& selected,
+                  const std::string& dir, const std::string& startName) {
+  RunInfo run;
+  run.caseDir = dir;
+  run.startTimeName = startName;
+  run.postProcessing = true;
+  run.isWriteTime = true;  // every saved time is a write time
+  bool started = false;
+  for (const auto& [t, name] : selected) {
+    try {
+      sim.loadTime(name);
+    } catch (const std::exception& e) {
+      throw InputError("time " + name + " (" + dir + "/" + name + ") cannot be read, so nothing was written: " +
+                       e.what());
+    }
+    if (!started) {
+      object.start(sim.state(), run);
+      started = true;
+    }
+    object.execute(sim.state(), run);
+    info("  time " + name);
+  }
+  object.end();
+}
 
 template <int D>
 int postProcess(const std::string& dir, const std::string& func, const std::string& times, bool overwrite) {
@@ -67,32 +131,16 @@ int postProcess(const std::string& dir, const std::string& func, const std::stri
   const auto selected = selectTimes(listTimeDirectories(dir), times);
   if (selected.empty()) throw InputError("no saved time directory in " + dir);
   const std::string out = dir + "/postProcessing/" + func + "/" + selected.front().second;
-  if (fs::exists(out)) {
-    if (!overwrite)
-      throw InputError(out + " exists (written by a run or an earlier post-processing); use -overwrite to replace it");
-    fs::remove_all(out);
-  }
-
+  if (fs::exists(out) && !overwrite)
+    throw InputError(out + " exists (written by a run or an earlier post-processing); use -overwrite to replace it");
   SimulationOptions opt;
   opt.postProcessing = true;
   Simulation<D> sim(dir, opt);
-  RunInfo run;
-  run.caseDir = dir;
-  run.startTimeName = selected.front().second;
-  run.postProcessing = true;
-  run.isWriteTime = true;  // every saved time is a write time
   info(cat(object->describe(), ": ", selected.size(), " time", selected.size() == 1 ? "" : "s", ", output ", out));
-  bool started = false;
-  for (const auto& [t, name] : selected) {
-    sim.loadTime(name);
-    if (!started) {
-      object->start(sim.state(), run);
-      started = true;
-    }
-    object->execute(sim.state(), run);
-    info("  time " + name);
-  }
-  object->end();
+  Staging staging(out);
+  processTimes(sim, *object, selected, dir, staging.name);
+  object.reset();  // closes the files
+  staging.publish();
   return 0;
 }
 

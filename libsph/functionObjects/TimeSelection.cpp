@@ -15,6 +15,16 @@ std::string trim(const std::string& s) {
   return s.substr(b, s.find_last_not_of(" \t") - b + 1);
 }
 
+// A time of the selection: a finite number (inf or nan would match every saved
+// time through the tolerance), or nullopt when `text` is no number at all.
+std::optional<double> finiteTime(const std::string& text, const std::string& item) {
+  const auto v = parseNumber(text);
+  if (v && !std::isfinite(*v))
+    throw InputError("-time: '" + item + "': '" + text + "' is not a finite time; give a saved time, a range a:b " +
+                     "(leave an end empty for no bound: 0.1: or :0.5), latestTime, firstTime or all");
+  return v;
+}
+
 bool near(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::max(std::abs(a), std::abs(b))); }
 }  // namespace
 
@@ -39,8 +49,8 @@ std::vector<std::pair<double, std::string>> selectTimes(const std::vector<std::p
       chosen[item == "latestTime" ? available.size() - 1 : 0] = true;
     } else if (const auto colon = item.find(':'); colon != std::string::npos) {
       const std::string a = trim(item.substr(0, colon)), b = trim(item.substr(colon + 1));
-      const auto lo = a.empty() ? std::optional<double>(-INFINITY) : parseNumber(a);
-      const auto hi = b.empty() ? std::optional<double>(INFINITY) : parseNumber(b);
+      const auto lo = a.empty() ? std::optional<double>(-INFINITY) : finiteTime(a, item);
+      const auto hi = b.empty() ? std::optional<double>(INFINITY) : finiteTime(b, item);
       if (!lo || !hi) throw InputError("-time: '" + item + "' is not a range a:b of times");
       bool any = false;
       for (std::size_t k = 0; k < available.size(); ++k) {
@@ -49,7 +59,7 @@ std::vector<std::pair<double, std::string>> selectTimes(const std::vector<std::p
       }
       if (!any) throw InputError("-time: no saved time in " + item + "; " + saved);
     } else {
-      const auto v = parseNumber(item);
+      const auto v = finiteTime(item, item);
       if (!v) throw InputError("-time: '" + item + "' is not a time, a range a:b, latestTime, firstTime or all");
       bool any = false;
       for (std::size_t k = 0; k < available.size(); ++k)

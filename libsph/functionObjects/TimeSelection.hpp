@@ -4,7 +4,8 @@
 //   a number      the saved time equal to it (relative tolerance 1e-9) or named so;
 //   a:b a: :b     every saved time t with a <= t <= b (bounds optional, tolerance 1e-9);
 //   latestTime    the last saved time;  firstTime the first one;  all  every time.
-// The result is sorted by time without repeats. A number that matches no
+// The result is sorted by time without repeats. A non-finite number (inf, nan)
+// is an InputError, as is a number that matches no
 // saved time, an empty range or a malformed item is an InputError listing the
 // saved times.
 // Dictionary keys read: none.

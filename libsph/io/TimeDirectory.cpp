@@ -45,23 +45,44 @@ void moveIntoPlace(const std::string& tmp, const std::string& target) {
   fileops::removeTree(old);
 }
 
-// Only an earlier time directory (a folder holding particles.vtp) or an empty
-// folder may be replaced: anything else of that name is the user's and stays.
+// The entries a time directory written by Shizuku holds: particles.vtp,
+// uniform/ and, with writeFormat ascii, one file per field (AsciiFields.hpp).
+bool writtenByShizuku(const std::string& entry) {
+  if (entry == "particles.vtp" || entry == "uniform" || entry == "position") return true;
+  bool field = false;
+  ParticleSet<2>().forEachField([&](const char* name, const auto&) { field = field || entry == name; });
+  return field;
+}
+
 void checkReplaceable(const std::string& target) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::symlink_status(target, ec);
-  if (ec || !fs::exists(st)) return;
-  if (!fs::is_directory(st))
-    throw std::runtime_error("cannot write time directory '" + target +
-                             "': a file that is not a folder has that name; move it away");
-  if (!fileops::isRegularFile(target + "/particles.vtp") && !fs::is_empty(target, ec))
-    throw std::runtime_error("cannot write time directory '" + target +
-                             "': a folder of that name holds no particles.vtp, so it is not a time directory "
-                             "written by Shizuku; move it away");
+  const std::string why = whyNotReplaceable(target);
+  if (!why.empty()) throw std::runtime_error("cannot write time directory '" + target + "': " + why);
 }
 
 }  // namespace
+
+std::string whyNotReplaceable(const std::string& target) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(target, ec);
+  if (ec || !fs::exists(st)) return "";
+  if (!fs::is_directory(st)) return "a file that is not a folder has that name; move it away";
+  if (fs::is_empty(target, ec)) return "";
+  const bool vtp = fileops::isRegularFile(target + "/particles.vtp");
+  if (!vtp || !fileops::isRegularFile(target + "/uniform/time"))
+    return std::string("a folder of that name holds ") + (vtp ? "particles.vtp but no uniform/time" : "no particles.vtp") +
+           ", so it is not a complete time directory written by Shizuku, and writing would delete what it holds; "
+           "move it away (or, to start from its particles, give it the uniform/time of a Shizuku time directory)";
+  std::string foreign;
+  for (const auto& e : fs::directory_iterator(target, ec))
+    if (!writtenByShizuku(e.path().filename().string())) foreign += (foreign.empty() ? "" : ", ") + e.path().filename().string();
+  for (const auto& e : fs::directory_iterator(target + "/uniform", ec))
+    if (e.path().filename() != "time") foreign += (foreign.empty() ? "uniform/" : ", uniform/") + e.path().filename().string();
+  if (!foreign.empty())
+    return "the time directory holds files Shizuku does not write (" + foreign +
+           "), which writing it would delete; move them away";
+  return "";
+}
 
 template <int D>
 void writeTimeDirectory(const std::string& caseDir, const std::string& timeName, const ParticleSet<D>& p,

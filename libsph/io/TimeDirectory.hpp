@@ -31,12 +31,18 @@ struct TimeState {
 
 // Throws std::runtime_error naming the path and strerror on any failure; an
 // existing time directory of the same or any other name is then untouched.
-// An existing <time> is replaced only when it is an earlier time directory
-// (holds particles.vtp) or an empty folder: a file, or a folder holding
-// something else, is an error and stays as it is.
+// An existing <time> is replaced only when whyNotReplaceable allows it:
+// anything else is an error and stays as it is.
 template <int D>
 void writeTimeDirectory(const std::string& caseDir, const std::string& timeName,
                         const ParticleSet<D>& p, const TimeState& s, bool ascii);
+
+// Why <target> (a time directory's path) must not be replaced by a write, or ""
+// when it may be: it may when absent, an empty folder, or a complete time
+// directory (particles.vtp and uniform/time) holding only what Shizuku writes
+// there (uniform/time, the ascii field files). A file, a folder without both
+// files, or one holding a file of the user's is the user's and stays.
+std::string whyNotReplaceable(const std::string& target);
 
 // Reads <case>/<timeName> back exactly. Throws InputError naming the file on
 // a missing or corrupt file, or one written by a run of another dimension.

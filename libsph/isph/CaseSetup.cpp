@@ -96,6 +96,12 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
     s.step = 0;
     s.dt = 0;
     startName = timeName(s.time);
+    // The run writes these particles as <startName>/ first: refused here, before
+    // anything is opened or written, when that would delete something of the user's.
+    if (!postProcessing)
+      if (const std::string why = whyNotReplaceable(files.dir + "/" + startName); !why.empty())
+        throw InputError("the run starts from particlesDict, so it must write time directory '" + files.dir + "/" +
+                         startName + "' first: " + why);
   }
   if (std::abs(s.particles.spacing - s.d0) > 1e-12 * s.d0)
     files.particlesDict.error("spacing", cat("differs from the spacing of the saved particles (",

@@ -106,8 +106,9 @@ void TimeLoop<D>::start() {
   startInfo.startTimeName = startTimeName_;
   startInfo.timers = &timers_;
   step_.analyse();
-  for (auto& f : functionObjects_) f->start(s_, startInfo);
+  // The initial write comes first: if it fails, no function-object file has been opened (truncated).
   if (freshStart) writeTime("initial particles");
+  for (auto& f : functionObjects_) f->start(s_, startInfo);
   step_.report().maxSpeed = guard_.check(s_, "in the initial state", files_.dir);
   runFunctionObjects(freshStart, 0, 0);
 }

@@ -1,8 +1,9 @@
 // Builds the initial particle set from system/particlesDict: fluid boxes and
 // circles on the lattice (i + 1/2) d0, wall boxes with `layers` rows outside
 // the wall surface (docs/method.md 11), removal of fluid that overlaps walls (a
-// cell grid, O(N)), initial velocities (uniform, rigid rotation, linear,
-// muParser expression), and the periodic box. Every rule and key is listed in
+// cell grid, O(N)), the check that the fluid left lies inside the walls,
+// initial velocities (uniform, rigid rotation, linear, muParser expression),
+// and the periodic box. Every rule and key is listed in
 // ParticleGenerator.hpp.
 #include "particles/ParticleGenerator.hpp"
 #include "particles/MemoryCheck.hpp"
@@ -484,58 +485,64 @@ PeriodicBox<D> readPeriodic(const Dictionary& dict, double d0) {
 
 }  // namespace
 
-// Is x inside the wall's container: strictly inside its surface box, with no
-// bound on an open side?
+// The closed face of w (0..2D-1: -x +x -y +y -z +z) that x lies beyond, or -1
+// when x is in the wall's closed interior: its surface box, boundary included,
+// unbounded on an open side.
 template <int D>
-bool inContainer(const Region<D>& w, const Vec<D>& x) {
+int faceCrossed(const Region<D>& w, const Vec<D>& x, double tol) {
   for (int k = 0; k < D; ++k) {
-    if (!w.open[2 * k] && !(x[k] > w.min[k])) return false;
-    if (!w.open[2 * k + 1] && !(x[k] < w.max[k])) return false;
-  }
-  return true;
-}
-
-// Closed face of w (0..2D-1, -x +x -y ...) that x lies beyond: past the
-// layers on that side, within the face's span in the other directions; -1 if none.
-template <int D>
-int beyondFace(const Region<D>& w, const Vec<D>& x) {
-  for (int k = 0; k < D; ++k) {
-    bool span = true;
-    for (int j = 0; j < D; ++j)
-      if (j != k && !(x[j] > w.min[j] && x[j] < w.max[j])) span = false;
-    if (!span) continue;
-    if (!w.open[2 * k] && x[k] < w.outerMin[k]) return 2 * k;
-    if (!w.open[2 * k + 1] && x[k] > w.outerMax[k]) return 2 * k + 1;
+    if (!w.open[2 * k] && x[k] < w.min[k] - tol) return 2 * k;
+    if (!w.open[2 * k + 1] && x[k] > w.max[k] + tol) return 2 * k + 1;
   }
   return -1;
 }
 
-// With walls present, fluid must start inside a wall's container; fluid on
-// both sides of a closed wall face is allowed (e.g. a submerged closed box)
-// but reported.
+// "the right face (x > 0.1 m)"
 template <int D>
-void checkAgainstWalls(const Dictionary& regions, const Region<D>& f, const std::vector<Region<D>>& walls) {
+std::string faceText(const Region<D>& w, int face) {
+  const int k = face / 2;
+  return "the " + faceNames(D)[face] + " face (" + axisName(k) + (face % 2 ? " > " + fmt(w.max[k]) : " < " + fmt(w.min[k])) +
+         " m)";
+}
+
+// With walls present, every fluid particle left after the removal of those in
+// the layers must lie in the closed interior of some wall (open faces extend
+// it). The error names the region, the wall holding most of its particles, the
+// faces of that wall the others lie beyond and how many. O(N x walls).
+template <int D>
+void checkAgainstWalls(const Dictionary& regions, const Region<D>& f, const std::vector<Region<D>>& walls, double tol) {
   if (walls.empty()) return;
-  bool anyInside = false;
-  for (const auto& w : walls) {
-    std::size_t inside = 0, beyond = 0;
-    int face = -1;
-    for (const auto& x : f.points) {
-      if (inContainer(w, x)) ++inside;
-      else if (int b = beyondFace(w, x); b >= 0) { ++beyond; face = b; }
-    }
-    anyInside = anyInside || inside > 0;
-    if (inside > 0 && beyond > 0)
-      Log::get().warning(regions.location(f.name).str() + ": fluid region '" + f.name + "' lies on both sides of the " +
-                         faceNames(D)[face] + " face of wall '" + w.name + "': " + std::to_string(inside) +
-                         " particles inside it, " + std::to_string(beyond) + " outside");
+  auto inAnyWall = [&](const Vec<D>& x) {
+    return std::any_of(walls.begin(), walls.end(), [&](const Region<D>& w) { return faceCrossed(w, x, tol) < 0; });
+  };
+  std::vector<std::size_t> inside(walls.size(), 0);
+  std::size_t outside = 0;
+  for (const auto& x : f.points) {
+    bool in = false;
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      if (faceCrossed(walls[w], x, tol) < 0) { ++inside[w]; in = true; }
+    if (!in) ++outside;
   }
-  if (!anyInside) {
+  if (outside == 0) return;
+  const std::size_t home = std::max_element(inside.begin(), inside.end()) - inside.begin();
+  if (inside[home] == 0) {
     std::string names;
     for (const auto& w : walls) names += (names.empty() ? "'" : ", '") + w.name + "'";
     regions.error(f.name, "fluid region '" + f.name + "' lies outside every wall (" + names +
                               "): no particle of it is inside a wall box (open sides extend the box)");
   }
+  const Region<D>& w = walls[home];
+  std::array<std::size_t, 2 * D> beyond{};
+  for (const auto& x : f.points)
+    if (!inAnyWall(x)) ++beyond[faceCrossed(w, x, tol)];
+  std::string faces;
+  for (int face = 0; face < 2 * D; ++face)
+    if (beyond[face] > 0) faces += (faces.empty() ? "" : ", ") + std::to_string(beyond[face]) + " beyond " + faceText(w, face);
+  regions.error(f.name, "fluid region '" + f.name + "' reaches outside wall '" + w.name + "': " + std::to_string(outside) +
+                            " of its " + std::to_string(f.points.size()) +
+                            " fluid particles lie outside the interior of every wall (" + faces +
+                            "); fluid must start inside the walls (open faces extend a wall's interior): "
+                            "shrink or move the region");
 }
 
 // Each region was checked alone; now all of them together (upper bounds: before overlap removal).
@@ -648,7 +655,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
       regionsDict.error(f.name, "fluid region '" + f.name + "' holds no particle (radius " + fmt(f.radius) +
                                     " m against spacing " + fmt(d0) + " m)");
     removeFluidInWalls<D>(regionsDict, f, walls, wallGrid, d0);
-    checkAgainstWalls(regionsDict, f, walls);
+    checkAgainstWalls(regionsDict, f, walls, tol);
     for (const auto& x : f.points)
       for (int k = 0; k < D; ++k)
         if (out.periodic.periodic[k] && (x[k] < out.periodic.lo[k] - tol || x[k] >= out.periodic.hi[k] - tol))

@@ -49,13 +49,15 @@
 //
 // Fluid particles closer than 0.5 d0 to a wall particle, or inside a wall's
 // layer region (the box grown by `layers` d0 on its closed sides, minus the
-// open interior), are removed. When the case has walls, every fluid region
-// must have a particle inside some wall's container (its surface box, open
-// sides unbounded); a region with particles on both sides of a closed wall
-// face is allowed (a submerged closed box) but a warning is logged.
+// open interior), are removed. When the case has walls, every fluid particle
+// left must lie in the closed interior of some wall (its surface box, boundary
+// included, unbounded on an open side): fluid cut by a wall, with particles
+// beyond its layers, is an error naming the region, the wall holding most of
+// it, and how many particles lie beyond which of its faces.
 // Errors (InputError, naming file, line and keyword): spacing <= 0, two
 // fluid regions whose shapes overlap (both are named), a fluid region left
-// empty, no fluid at all, a fluid region outside every wall, a fluid particle
+// empty, no fluid at all, a fluid region outside every wall or reaching
+// outside the walls' interior, a fluid particle
 // outside the periodic box in a periodic direction, a periodic length that is
 // not a whole number of spacings, more particles than maxParticles, a
 // coordinate more than 1e12 spacings from the origin, unknown keywords

@@ -4,7 +4,9 @@ a 12 x 8 particle set (fluid with a linear pressure, a row of walls) written
 with VTK's XML writer, postProcessing files with scalars, vectors, a restart
 folder and a density-error histogram, and a reference CSV. The script must
 write every expected PNG, each a real picture (PNG signature, many colours
-for the particle pictures), and fail with exit 1 on bad input.
+for the particle pictures), and fail with exit 1 on bad input: a -range that is
+not finite or not MIN < MAX, a particles.vtp with a corrupt XML header; -help
+prints the usage with exit 0.
 
 usage: plotSmoke.py SHIZUKUPLOT WORKDIR
 """
@@ -27,7 +29,7 @@ PLOT, WORK = sys.argv[1:3]
 CASE = os.path.join(WORK, "plotCase")
 
 
-def write_vtp(path, t, d0=0.01):
+def write_vtp(path, t, d0=0.01, raw=False):
     nx, ny = 12, 8
     xs, ys = np.meshgrid((np.arange(nx) + 0.5) * d0, (np.arange(ny) + 0.5) * d0)
     x = np.c_[xs.ravel(), ys.ravel(), np.zeros(nx * ny)]
@@ -60,7 +62,13 @@ def write_vtp(path, t, d0=0.01):
     w = vtkXMLPolyDataWriter()
     w.SetFileName(path)
     w.SetInputData(poly)
-    w.SetDataModeToBinary()
+    if raw:  # as Shizuku writes it: raw appended data, UInt64 block headers
+        w.SetDataModeToAppended()
+        w.EncodeAppendedDataOff()
+        w.SetCompressorTypeToNone()
+        w.SetHeaderTypeToUInt64()
+    else:
+        w.SetDataModeToBinary()
     st.check(w.Write() == 1, f"wrote {path}")
 
 
@@ -165,6 +173,40 @@ def main():
                      (["-case", CASE, "-what", "pictures"], "unknown -what")):
         r = run(bad)
         st.check(r.returncode == 1 and "error" in r.stdout, f"{why}: exit 1 with a message")
+    # -range must be finite with MIN below MAX; nothing is drawn otherwise.
+    for rng, message in ((["1", "nan"], "-range 1 nan: MIN and MAX must be finite"),
+                         (["0", "inf"], "-range 0 inf: MIN and MAX must be finite"),
+                         (["-inf", "1"], "argument -range/--range: expected 2 arguments"),
+                         (["5", "-5"], "-range: min 5 > max -5"), (["2", "2"], "-range: min 2 = max 2")):
+        shutil.rmtree(plots, ignore_errors=True)
+        r = run(["-case", CASE, "-what", "particles", "-range"] + rng)
+        st.check(r.returncode == 1 and message in r.stdout and not os.path.exists(plots),
+                 f"-range {' '.join(rng)}: exit 1, '{message}', no plots/ folder: {r.stdout[-200:]}")
+    # -help, -h, --help: the usage on standard output, exit 0 (as the C++ tools)
+    for flag in ("-help", "-h", "--help"):
+        r = run([flag])
+        st.check(r.returncode == 0 and "usage: shizukuPlot" in r.stdout and "-range" in r.stdout, f"{flag}: usage, exit 0")
+    # A corrupt XML header is refused, naming the file, before VTK reads it: a negative
+    # count (VTK crashes on it), and raw appended arrays whose sizes disagree with it.
+    bad = os.path.join(WORK, "badVtp")
+    shutil.rmtree(bad, ignore_errors=True)
+    write_vtp(os.path.join(bad, "0", "particles.vtp"), 0.0, raw=True)
+    path = os.path.join(bad, "0", "particles.vtp")
+    good = open(path, "rb").read()
+    r = run(["-case", bad, "-what", "particles"])
+    st.check(r.returncode == 0, f"a raw appended vtp passes the header check: {r.stdout[-300:]}")
+    for edit, message in (((b'NumberOfPoints="108"', b'NumberOfPoints="-5"'), 'NumberOfPoints="-5" is not a count'),
+                          ((b'NumberOfPoints="108"', b'NumberOfPoints="200"'), "but 200 tuples of"),
+                          ((b'NumberOfVerts="108"', b'NumberOfVerts="1e9"'), 'NumberOfVerts="1e9" is not a count')):
+        with open(path, "wb") as f:
+            f.write(good.replace(*edit))
+        r = run(["-case", bad, "-what", "particles"])
+        st.check(r.returncode == 1 and path in r.stdout and message in r.stdout,
+                 f"vtp with {edit[1].decode()}: exit 1 naming the file, '{message}': {r.stdout[-300:]}")
+    with open(path, "wb") as f:
+        f.write(good[:len(good) * 2 // 3])
+    r = run(["-case", bad, "-what", "particles"])
+    st.check(r.returncode == 1 and path in r.stdout and "cut short" in r.stdout, f"vtp cut short: {r.stdout[-300:]}")
     return st.summary()
 
 

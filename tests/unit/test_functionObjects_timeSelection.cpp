@@ -41,6 +41,19 @@ BOOST_AUTO_TEST_CASE(errors) {
   BOOST_CHECK_THROW(selectTimes(saved, "0.1,,0.2"), InputError);
   BOOST_CHECK_THROW(selectTimes(saved, "x:0.2"), InputError);
   BOOST_CHECK_THROW(selectTimes({}, "latestTime"), InputError);
+  // Non-finite times would match every saved time through the tolerance: refused, named.
+  for (const char* bad : {"inf", "inf:", ":inf", "-inf:", "nan", "0:nan", "Infinity", "0.1,inf"}) {
+    BOOST_TEST_INFO(bad);
+    const std::string m = [&] {
+      try {
+        selectTimes(saved, bad);
+      } catch (const InputError& e) {
+        return std::string(e.what());
+      }
+      return std::string("no error");
+    }();
+    BOOST_TEST(m.find("is not a finite time") != std::string::npos, m);
+  }
   try {
     selectTimes(saved, "0.15");
   } catch (const InputError& e) {

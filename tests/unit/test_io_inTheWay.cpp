@@ -1,6 +1,7 @@
 // A time directory is never written over something that is not one
-// (TimeDirectory.hpp): a regular file or a non-empty folder without
-// particles.vtp at the time's path is an error naming the path, and stays
+// (TimeDirectory.hpp): a regular file, a non-empty folder without both
+// particles.vtp and uniform/time, or a time directory holding a file Shizuku
+// does not write, at the time's path, is an error naming the path, and stays
 // byte for byte; an empty folder or an earlier time directory is replaced.
 // Leftovers of killed writers (*.tmp-<pid>, *.old-<pid> of a dead pid) are
 // swept by the next successful write.
@@ -43,6 +44,30 @@ BOOST_AUTO_TEST_CASE(foreign_folder_at_the_time_path_stays) {
   BOOST_TEST(throwsNaming([&] { writeTimeDirectory<2>(c.path, "1", randomSet<2>(5, false, 1), TimeState{1, 5, 0.1, 0.1, ""}, false); },
                           c.path + "/1", "holds no particles.vtp"));
   BOOST_TEST(slurp(c.path + "/1/data.csv") == "1,2,3\n");
+}
+
+BOOST_AUTO_TEST_CASE(incomplete_or_extended_time_directory_stays) {
+  ScratchDir c;
+  // The user's own particles.vtp without uniform/time, beside notes of theirs.
+  fs::create_directories(c.path + "/0");
+  std::ofstream(c.path + "/0/particles.vtp") << "<VTKFile/>\n";
+  std::ofstream(c.path + "/0/notes.txt") << "mine\n";
+  BOOST_TEST(throwsNaming([&] { writeTimeDirectory<2>(c.path, "0", randomSet<2>(5, false, 1), TimeState{}, false); },
+                          c.path + "/0", "holds particles.vtp but no uniform/time"));
+  BOOST_TEST(slurp(c.path + "/0/notes.txt") == "mine\n");
+  BOOST_TEST(slurp(c.path + "/0/particles.vtp") == "<VTKFile/>\n");
+  // A complete time directory (with ascii fields) is replaced; once the user has put a
+  // file of theirs into it, it is not, and the file is named.
+  writeTimeDirectory<2>(c.path, "1", randomSet<2>(5, false, 1), TimeState{1, 5, 0.1, 0.1, ""}, true);
+  writeTimeDirectory<2>(c.path, "1", randomSet<2>(6, false, 2), TimeState{1, 6, 0.1, 0.1, ""}, true);
+  std::ofstream(c.path + "/1/uniform/mine") << "x\n";
+  std::ofstream(c.path + "/1/plot.png") << "png\n";
+  BOOST_TEST(whyNotReplaceable(c.path + "/1").find("files Shizuku does not write (plot.png, uniform/mine)") !=
+             std::string::npos);
+  BOOST_TEST(throwsNaming([&] { writeTimeDirectory<2>(c.path, "1", randomSet<2>(7, false, 3), TimeState{1, 7, 0.1, 0.1, ""}, true); },
+                          c.path + "/1", "which writing it would delete"));
+  TimeState s;
+  BOOST_TEST(readTimeDirectory<2>(c.path, "1", s).size() == 6u);
 }
 
 BOOST_AUTO_TEST_CASE(empty_folder_and_earlier_time_are_replaced) {

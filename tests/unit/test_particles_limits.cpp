@@ -1,8 +1,8 @@
 // Limits of the particle generator (ParticleGenerator.hpp): maxParticles is
 // checked before anything is allocated (per region, in total, and exactly
 // after filling), a caller's cap lowers it, coordinates far from the origin
-// are refused, and fluid outside every wall is an error while fluid on both
-// sides of a wall face is a warning. Counts are worked out by hand.
+// are refused, and fluid outside every wall, or partly outside the walls'
+// interior, is an error. Counts are worked out by hand.
 #define BOOST_TEST_MODULE particles_limits
 #include <boost/test/unit_test.hpp>
 
@@ -128,18 +128,33 @@ BOOST_AUTO_TEST_CASE(fluid_outside_every_wall_is_an_error) {
   BOOST_TEST(generate<2>("spacing 1; regions { f { type fluid; shape box; min (20 0); max (25 5); } }").set.size() == 25u);
 }
 
-BOOST_AUTO_TEST_CASE(fluid_on_both_sides_of_a_wall_is_a_warning) {
+BOOST_AUTO_TEST_CASE(fluid_outside_the_walls_interior_is_an_error) {
   // Fluid x in (0, 20) against a tank of width 10 with 2 layers: columns x = 0.5 .. 9.5
   // inside (10 x 5 = 50 particles), 10.5, 11.5 in the layers (removed), 12.5 .. 19.5
   // beyond the right face (8 x 5 = 40).
-  const std::string text = "spacing 1; regions { f { type fluid; shape box; min (0 0); max (20 5); }"
-                           " t { type wall; shape box; min (0 0); max (10 10); layers 2; open (top); } }";
-  const std::string log = logOf(text);
-  BOOST_TEST_INFO(log);
-  BOOST_TEST(contains(log, "Warning: case/system/particlesDict:1:"));
-  BOOST_TEST(contains(log, "fluid region 'f' lies on both sides of the right face of wall 't': 50 particles inside it, 40 outside"));
-  // A fluid region wholly inside logs nothing.
-  BOOST_TEST(logOf("spacing 1; regions { f { type fluid; shape box; min (0 0); max (10 5); }"
-                   " t { type wall; shape box; min (0 0); max (10 10); layers 2; open (top); } }")
-                 .empty());
+  const std::string tank = " t { type wall; shape box; min (0 0); max (10 10); layers 2; open (top); } }";
+  const std::string m = errorOf<2>("spacing 1; regions { f { type fluid; shape box; min (0 0); max (20 5); }" + tank);
+  BOOST_TEST_INFO(m);
+  BOOST_TEST(contains(m, "case/system/particlesDict:1:"));
+  BOOST_TEST(contains(m, "keyword 'f': fluid region 'f' reaches outside wall 't': 40 of its 90 fluid particles lie "
+                         "outside the interior of every wall (40 beyond the right face (x > 10 m))"));
+  // Each particle outside is counted at the first face it lies beyond (x before y): a
+  // 9 x 9 box from (-4 -4) over the corner of a closed tank with 1 layer: 11 particles in
+  // the layer are removed, 25 lie inside, 30 beyond the left face (x < 0; 27 of them with
+  // x <= -1.5, 3 at x = -0.5 below the layer), 15 beyond the bottom face (0 < x < 5).
+  const std::string corner = errorOf<2>("spacing 1; regions { f { type fluid; shape box; min (-4 -4); max (5 5); }"
+                                        " t { type wall; shape box; min (0 0); max (10 10); layers 1; } }");
+  BOOST_TEST_INFO(corner);
+  BOOST_TEST(contains(corner, "45 of its 70 fluid particles lie outside the interior of every wall (30 beyond the "
+                              "left face (x < 0 m), 15 beyond the bottom face (y < 0 m))"));
+  // A particle on the surface of a wall belongs to its closed interior; so does one
+  // above an open face; a second wall's interior counts as well.
+  BOOST_TEST(generate<2>("spacing 1; regions { f { type fluid; shape box; min (0.5 0); max (10.5 5); }"
+                         " t { type wall; shape box; min (0 0); max (10 10); layers 2; open (top); } }").set.size() > 0u);
+  BOOST_TEST(generate<2>("spacing 1; regions { f { type fluid; shape box; min (2 20); max (4 22); }" + tank).set.size() > 4u);
+  BOOST_TEST(generate<2>("spacing 1; regions { f { type fluid; shape box; min (0 0); max (30 5); }"
+                         " a { type wall; shape box; min (0 0); max (15 10); layers 1; open (right top); }"
+                         " b { type wall; shape box; min (15 0); max (30 10); layers 1; open (left top); } }")
+                 .set.size() > 150u);
+  BOOST_TEST(logOf("spacing 1; regions { f { type fluid; shape box; min (0 0); max (10 5); }" + tank).empty());
 }
