@@ -70,6 +70,7 @@ BOOST_AUTO_TEST_CASE(emptySet) {
   ParticleSet<3> p;
   p.resize(0);
   p.mass = 2;
+  p.spacing = 0.1;
   writeTimeDirectory<3>(c.path, "0", p, TimeState{}, true);
   TimeState r;
   auto q = readTimeDirectory<3>(c.path, "0", r);
