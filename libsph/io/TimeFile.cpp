@@ -41,7 +41,7 @@ std::map<std::string, Entry> parse(const std::string& path, const std::string& t
     while (i < text.size()) {
       char c = text[i];
       if (c == '\n') { ++line; ++i; }
-      else if (c == ' ' || c == '\t' || c == '\r') ++i;
+      else if (std::isspace((unsigned char)c)) ++i;  // the same blanks that end a word below
       else if (text.compare(i, 2, "//") == 0) { while (i < text.size() && text[i] != '\n') ++i; }
       else if (text.compare(i, 2, "/*") == 0) {
         std::size_t end = text.find("*/", i + 2);
@@ -72,6 +72,7 @@ std::map<std::string, Entry> parse(const std::string& path, const std::string& t
     while (i < text.size() && !std::isspace((unsigned char)text[i]) && text[i] != ';' && text[i] != '"' &&
            text[i] != '{' && text[i] != '}')
       t += text[i++];
+    if (t.empty()) bad(path, line, "unexpected character");  // never loop without progress
     return true;
   };
   std::string key, value, semi;
