@@ -3,7 +3,7 @@
 
 usage: runCase.py CASE_SRC WORK_DIR --shizuku BIN --compare SHIZUKUCOMPARE
                   [--threads N] [--spacing D0] [--deltaT DT] [--endTime T] [--json OUT]
-                  [--variant NAME] [--skip-run] [--update-reference]
+                  [--variant NAME] [--skip-run]
 
 CASE_SRC is a folder of tests/cases or tests/stability: system/, constant/ (the case),
 README.md, and `checks`, a dictionary in the case syntax with one entry per check:
@@ -24,14 +24,13 @@ system/controlDict: used by the resolution studies), and run with
 is run next as `makeAnalytic.py WORKCASE`: it writes the analytic reference files into
 WORKCASE/analytic/ for the run's own spacing. Then each check runs shizukuCompare (paths
 of `analytic` relative to the work case, of `tolerances` and `reference` relative to
-CASE_SRC) or the stability checker. A `reference` folder holds the postProcessing files of
-an earlier run at the committed size ("same as last time"); --update-reference rewrites
-it from this run (after a deliberate change of the method; review the diff). The last line is `N passed, M failed`; exit status 0
-when every check passes.
+CASE_SRC) or the stability checker. A `reference` folder holds postProcessing files from a
+resolution study (a finer run, written by the case's own makeReference.py with its
+provenance in the file header), never this code's output at the committed size. The last
+line is `N passed, M failed`; exit status 0 when every check passes.
 """
 import json
 import os
-import shutil
 import subprocess
 import sys
 import time
@@ -43,27 +42,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PYTHON = "/usr/bin/python3"
 
 
-def update_reference(cmp_mod, src, case, checks):
-    """Copy the run's postProcessing files that the reference checks compare into the
-    case's reference folder (only those files: a reference stays small)."""
-    run = cmp_mod.Series(case)
-    for entry in checks.values():
-        if not isinstance(entry, dict) or "reference" not in entry:
-            continue
-        dst = os.path.join(src, entry["reference"], "postProcessing")
-        shutil.rmtree(dst, ignore_errors=True)
-        tol = cmp_mod.read_dictionary(os.path.join(src, entry["tolerances"]))
-        files = {tuple(full.split("/")[:2]) for key in tol for full in run.resolve(key)}
-        for obj, fname in sorted(files):
-            odir = os.path.join(case, "postProcessing", obj)
-            for start in os.listdir(odir):
-                path = os.path.join(odir, start, fname)
-                if os.path.isfile(path):
-                    os.makedirs(os.path.join(dst, obj, start), exist_ok=True)
-                    shutil.copy(path, os.path.join(dst, obj, start, fname))
-                    print(f"reference updated: {os.path.relpath(os.path.join(dst, obj, start, fname), src)}")
-
-
 def main():
     ap = st.case_arguments()
     ap.add_argument("--spacing")
@@ -72,9 +50,6 @@ def main():
     ap.add_argument("--variant", help="apply the overrides of checks/variants/<name> (e.g. long)")
     ap.add_argument("--json", help="write every compared quantity as JSON here")
     ap.add_argument("--skip-run", action="store_true", help="check an existing work case again")
-    ap.add_argument("--update-reference", action="store_true",
-                    help="after the run, copy the postProcessing files named by the `reference` checks' "
-                         "tolerances into CASE_SRC/<reference> (review with git diff before committing)")
     a = ap.parse_args()
 
     src = os.path.abspath(a.case)
@@ -120,8 +95,6 @@ def main():
     st.check(rc == expect_exit, "exit status", quiet=True)
     if os.path.isfile(os.path.join(src, "makeAnalytic.py")):
         subprocess.check_call([PYTHON, os.path.join(src, "makeAnalytic.py"), case])
-    if a.update_reference:
-        update_reference(cmp_mod, src, case, checks)
     all_results = {}
     for check, entry in checks.items():
         if not isinstance(entry, dict):

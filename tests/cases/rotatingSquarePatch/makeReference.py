@@ -1,0 +1,50 @@
+#!/usr/bin/python3
+"""Rotating square patch: the centre-pressure history of a fine run, as the reference of
+the `resolution` check (README.md, "Resolution study").
+
+usage: makeReference.py FINE_RUN_CASE   -> reference/centrePressure.dat (this folder)
+
+FINE_RUN_CASE is this case run at a finer spacing (runCase.py --spacing D0 --deltaT DT).
+Its history p(t) at the centre probe is stored divided by rho omega^2 (L - d0)^2, the
+scale of the exact initial pressure with p = 0 on the outermost particle row (d0/2 inside
+the true edge: makeAnalytic.py); makeAnalytic.py multiplies it back for the spacing of
+the run being checked. The file header records the spacing and time step it came from.
+"""
+import os
+import re
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+RHO, OMEGA, L = 1000.0, 1.0, 1.0
+
+
+def read_setting(path, key):
+    with open(path) as f:
+        return float(re.search(rf"(?m)^\s*{key}\s+([^;]+);", f.read()).group(1))
+
+
+def main():
+    case = sys.argv[1]
+    d0 = read_setting(os.path.join(case, "system", "particlesDict"), "spacing")
+    dt = read_setting(os.path.join(case, "system", "controlDict"), "deltaT")
+    scale = RHO * OMEGA ** 2 * (L - d0) ** 2
+    rows = []
+    with open(os.path.join(case, "postProcessing", "centre", "0", "p")) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            t, p = (float(x) for x in line.split()[:2])
+            rows.append((t, p / scale))
+    out = os.path.join(HERE, "reference", "centrePressure.dat")
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    with open(out, "w") as f:
+        f.write(f"# Rotating square patch: centre pressure / (rho omega^2 (L - d0)^2), from a run at\n"
+                f"# L/d0 = {L / d0:g} (d0 = {d0:g} m, dt = {dt:g} s), written by makeReference.py\n"
+                f"# columns: time [s]  p / (rho omega^2 (L - d0)^2) [-]\n")
+        for t, q in rows:
+            f.write(f"{t!r} {q!r}\n")
+    print(f"makeReference: {len(rows)} samples from L/d0 = {L / d0:g} -> {os.path.relpath(out, HERE)}")
+
+
+if __name__ == "__main__":
+    main()
