@@ -113,6 +113,10 @@ std::string formatTimeFile(const TimeState& s, const std::string& timeName) {
   o << "deltaT   " << exactNumber(s.deltaT) << ";   // s, next step\n";
   o << "deltaT0  " << exactNumber(s.deltaT0) << ";   // s, previous step\n";
   if (!s.note.empty()) o << "note     " << quoted(s.note) << ";\n";
+  if (s.removedCount > 0) {
+    o << "removedMass   " << exactNumber(s.removedMass) << ";   // fluid removed through the domain's bounds\n";
+    o << "removedCount  " << s.removedCount << ";\n";
+  }
   return o.str();
 }
 
@@ -133,6 +137,8 @@ TimeState readTimeFile(const std::string& path) {
   s.deltaT = number(path, e, "deltaT");
   s.deltaT0 = e.count("deltaT0") ? number(path, e, "deltaT0") : s.deltaT;
   if (e.count("note")) s.note = e.at("note").text;
+  if (e.count("removedMass")) s.removedMass = number(path, e, "removedMass");
+  if (e.count("removedCount")) s.removedCount = long(number(path, e, "removedCount"));
   return s;
 }
 
