@@ -3,6 +3,7 @@
 #include "io/TimeDirectory.hpp"
 #include "io/AsciiFields.hpp"
 #include "io/FileOps.hpp"
+#include "io/RestartChecks.hpp"
 #include "io/TimeFile.hpp"
 #include "io/TimeName.hpp"
 #include "io/VtpFile.hpp"
@@ -143,8 +144,11 @@ template <int D>
 ParticleSet<D> readTimeDirectory(const std::string& caseDir, const std::string& timeName, TimeState& s) {
   const std::string dir = caseDir + "/" + timeName;
   if (!fileops::isDirectory(dir)) throw InputError("time directory '" + dir + "' does not exist");
-  ParticleSet<D> p = readVtp<D>(dir + "/particles.vtp", nullptr);
-  s = readTimeFile(dir + "/uniform/time");
+  // The small text file first: a folder of the wrong time is refused before the particles are read.
+  s = readTimeFile(dir + "/uniform/time", timeName);
+  VtpTime vtpTime;
+  ParticleSet<D> p = readVtp<D>(dir + "/particles.vtp", &vtpTime);
+  checkTimeAgreement(dir + "/particles.vtp", vtpTime, dir + "/uniform/time", s);
   return p;
 }
 

@@ -47,7 +47,9 @@ void writeTimeDirectory(const std::string& caseDir, const std::string& timeName,
 std::string whyNotReplaceable(const std::string& target);
 
 // Reads <case>/<timeName> back exactly. Throws InputError naming the file on
-// a missing or corrupt file, or one written by a run of another dimension.
+// a missing or corrupt file, one written by a run of another dimension, or
+// values a run cannot start from (VtpFile.hpp, RestartChecks.hpp), and when
+// the folder's name, uniform/time and the vtp's time fields disagree.
 template <int D>
 ParticleSet<D> readTimeDirectory(const std::string& caseDir, const std::string& timeName, TimeState& s);
 

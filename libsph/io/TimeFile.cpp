@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -40,7 +41,7 @@ std::map<std::string, Entry> parse(const std::string& path, const std::string& t
     while (i < text.size()) {
       char c = text[i];
       if (c == '\n') { ++line; ++i; }
-      else if (c == ' ' || c == '\t' || c == '\r') ++i;
+      else if (std::isspace((unsigned char)c)) ++i;  // the same blanks that end a word below
       else if (text.compare(i, 2, "//") == 0) { while (i < text.size() && text[i] != '\n') ++i; }
       else if (text.compare(i, 2, "/*") == 0) {
         std::size_t end = text.find("*/", i + 2);
@@ -71,6 +72,7 @@ std::map<std::string, Entry> parse(const std::string& path, const std::string& t
     while (i < text.size() && !std::isspace((unsigned char)text[i]) && text[i] != ';' && text[i] != '"' &&
            text[i] != '{' && text[i] != '}')
       t += text[i++];
+    if (t.empty()) bad(path, line, "unexpected character");  // never loop without progress
     return true;
   };
   std::string key, value, semi;
@@ -99,6 +101,21 @@ double number(const std::string& path, const std::map<std::string, Entry>& e, co
   return *v;
 }
 
+// The folder's name, the time it holds and the `name` keyword agree to the
+// writer's time-name precision (TimeName.hpp): a folder renamed or copied to
+// another time is refused, not listed and run at the wrong time.
+void checkFolderName(const std::string& path, const std::map<std::string, Entry>& e, double time,
+                     const std::string& folderName) {
+  const auto folder = parseTimeName(folderName);
+  const std::string expected = timeName(time);
+  if (!folder || *folder != *parseTimeName(expected))
+    bad(path, e.at("value").line, "keyword 'value': time " + exactNumber(time) + " does not belong in folder '" +
+                                      folderName + "' (its folder is '" + expected + "')");
+  auto it = e.find("name");
+  if (it != e.end() && parseTimeName(it->second.text) != folder)
+    bad(path, it->second.line, "keyword 'name': '" + it->second.text + "' is not the folder's name '" + folderName + "'");
+}
+
 }  // namespace
 
 std::string formatTimeFile(const TimeState& s, const std::string& timeName) {
@@ -120,7 +137,7 @@ std::string formatTimeFile(const TimeState& s, const std::string& timeName) {
   return o.str();
 }
 
-TimeState readTimeFile(const std::string& path) {
+TimeState readTimeFile(const std::string& path, const std::string& folderName) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read time file '" + path + "': " + std::strerror(errno));
   std::stringstream buf;
@@ -128,17 +145,34 @@ TimeState readTimeFile(const std::string& path) {
   auto e = parse(path, buf.str());
   TimeState s;
   s.time = number(path, e, "value");
+  if (!std::isfinite(s.time)) bad(path, e.at("value").line, "keyword 'value': " + exactNumber(s.time) + " is not a finite time");
   auto it = e.find("index");
   if (it == e.end()) throw InputError(path + ": keyword 'index' is missing");
   const std::string& t = it->second.text;
   auto r = std::from_chars(t.data(), t.data() + t.size(), s.step);
   if (r.ec != std::errc() || r.ptr != t.data() + t.size())
     bad(path, it->second.line, "keyword 'index': '" + t + "' is not an integer");
+  if (s.step < 0) bad(path, it->second.line, "keyword 'index': " + t + " is negative (a time-step index is >= 0)");
   s.deltaT = number(path, e, "deltaT");
   s.deltaT0 = e.count("deltaT0") ? number(path, e, "deltaT0") : s.deltaT;
+  for (const char* k : {"deltaT", "deltaT0"}) {
+    const double dt = std::string(k) == "deltaT" ? s.deltaT : s.deltaT0;
+    // 0 only in the initial state, written before any step chose a dt.
+    if (!std::isfinite(dt) || dt < 0 || (dt == 0 && s.step != 0))
+      bad(path, e.at(e.count(k) ? k : "deltaT").line,
+          std::string("keyword '") + k + "': " + exactNumber(dt) + " is not a positive finite time step");
+  }
   if (e.count("note")) s.note = e.at("note").text;
   if (e.count("removedMass")) s.removedMass = number(path, e, "removedMass");
-  if (e.count("removedCount")) s.removedCount = long(number(path, e, "removedCount"));
+  if (!std::isfinite(s.removedMass) || s.removedMass < 0)
+    bad(path, e.at("removedMass").line, "keyword 'removedMass': " + exactNumber(s.removedMass) + " is not a mass >= 0");
+  if (e.count("removedCount")) {
+    const double n = number(path, e, "removedCount");
+    if (!(n >= 0 && n <= 9e15 && n == std::floor(n)))
+      bad(path, e.at("removedCount").line, "keyword 'removedCount': " + exactNumber(n) + " is not a whole number >= 0");
+    s.removedCount = long(n);
+  }
+  if (!folderName.empty()) checkFolderName(path, e, s.time, folderName);
   return s;
 }
 

@@ -19,8 +19,12 @@
 namespace shizuku {
 
 std::string formatTimeFile(const TimeState& s, const std::string& timeName);
-// Throws InputError naming the file if it is missing or a required entry
-// (value, index, deltaT) is absent or not a number. deltaT0 defaults to deltaT.
-TimeState readTimeFile(const std::string& path);
+// Throws InputError naming the file, line and keyword if it is missing, a
+// required entry (value, index, deltaT) is absent or not a number, value is
+// not finite, index is negative, or deltaT/deltaT0 is not finite and positive
+// (0 is allowed at index 0: the initial state). deltaT0 defaults to deltaT.
+// With a folderName, value (and name, if given) must name that folder at the
+// writer's precision (timeName(value) reads back as the same number).
+TimeState readTimeFile(const std::string& path, const std::string& folderName = "");
 
 }  // namespace shizuku

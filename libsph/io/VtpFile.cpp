@@ -1,8 +1,14 @@
 // particles.vtp writer and exact reader: see VtpFile.hpp (docs/design.md 1.3).
 #include "io/VtpFile.hpp"
 #include "io/FileOps.hpp"
+#include "io/RestartChecks.hpp"
+#include "io/TimeName.hpp"
+#include "io/VtpLayout.hpp"
 #include <cerrno>
+#include <cmath>
 #include <cstring>
+#include <limits>
+#include <optional>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
@@ -92,9 +98,7 @@ void addFieldValue(vtkFieldData* fd, const char* name, std::int64_t value) {
 
 // --- reading -----------------------------------------------------------------
 
-[[noreturn]] void corrupt(const std::string& path, const std::string& why) {
-  throw InputError("corrupt particle file '" + path + "': " + why);
-}
+[[noreturn]] void corrupt(const std::string& path, const std::string& why) { corruptVtp(path, why); }
 
 bool isInt64(const vtkAbstractArray* a) {
   int t = const_cast<vtkAbstractArray*>(a)->GetDataType();
@@ -142,27 +146,76 @@ void readArray(const std::string& path, const char* name, vtkDataArray* a, vtkId
     for (int k = 0; k < D; ++k) v[i][k] = x[3 * i + k];
 }
 
-vtkDataArray* fieldArray(const std::string& path, vtkFieldData* fd, const char* name, bool required) {
-  vtkDataArray* a = fd ? fd->GetArray(name) : nullptr;
-  if (!a) {
-    if (required) corrupt(path, std::string("field data '") + name + "' is missing");
-    return nullptr;
+// The single-value field data of one file.
+class FieldValues {
+ public:
+  FieldValues(const std::string& path, vtkFieldData* fd) : path_(path), fd_(fd) {}
+
+  std::optional<double> real(const char* name, bool required = false) const {
+    vtkDataArray* a = array(name, required);
+    if (!a) return std::nullopt;
+    if (a->GetDataType() != VTK_DOUBLE) corrupt(path_, std::string("field data '") + name + "' is not Float64");
+    const double v = static_cast<const double*>(a->GetVoidPointer(0))[0];
+    if (!std::isfinite(v)) corrupt(path_, std::string("field data '") + name + "' is " + exactNumber(v) + ", not finite");
+    return v;
   }
-  if (a->GetNumberOfTuples() != 1 || a->GetNumberOfComponents() != 1)
-    corrupt(path, std::string("field data '") + name + "' is not a single value");
-  return a;
-}
+  double positive(const char* name) const {
+    const double v = *real(name, true);
+    if (!(v > 0)) corrupt(path_, std::string("field data '") + name + "' is " + exactNumber(v) + ", not positive");
+    return v;
+  }
+  // A finite time step: positive, or 0 in the initial state (step 0, before any dt was chosen).
+  std::optional<double> deltaT(const char* name, std::optional<long> step) const {
+    auto v = real(name);
+    if (v && !(*v > 0 || (*v == 0 && step.value_or(0) == 0)))
+      corrupt(path_, std::string("field data '") + name + "' is " + exactNumber(*v) + ", not a positive time step");
+    return v;
+  }
+  std::optional<std::int64_t> integer(const char* name, std::int64_t min, std::int64_t max, bool required = false) const {
+    vtkDataArray* a = array(name, required);
+    if (!a) return std::nullopt;
+    if (!isInt64(a)) corrupt(path_, std::string("field data '") + name + "' is not Int64");
+    std::int64_t v;
+    std::memcpy(&v, a->GetVoidPointer(0), sizeof v);
+    if (v < min || v > max)
+      corrupt(path_, std::string("field data '") + name + "' is " + std::to_string(v) + ", not in " +
+                         std::to_string(min) + ".." + std::to_string(max));
+    return v;
+  }
 
-double fieldDouble(const std::string& path, vtkDataArray* a, const char* name) {
-  if (a->GetDataType() != VTK_DOUBLE) corrupt(path, std::string("field data '") + name + "' is not Float64");
-  return static_cast<const double*>(a->GetVoidPointer(0))[0];
-}
+ private:
+  vtkDataArray* array(const char* name, bool required) const {
+    vtkDataArray* a = fd_ ? fd_->GetArray(name) : nullptr;
+    if (!a) {
+      if (required) corrupt(path_, std::string("field data '") + name + "' is missing");
+      return nullptr;
+    }
+    if (a->GetNumberOfTuples() != 1 || a->GetNumberOfComponents() != 1)
+      corrupt(path_, std::string("field data '") + name + "' is not a single value");
+    return a;
+  }
+  const std::string& path_;
+  vtkFieldData* fd_;
+};
 
-std::int64_t fieldInt(const std::string& path, vtkDataArray* a, const char* name) {
-  if (!isInt64(a)) corrupt(path, std::string("field data '") + name + "' is not Int64");
-  std::int64_t v;
-  std::memcpy(&v, a->GetVoidPointer(0), sizeof v);
-  return v;
+// VTK reads the file the pre-scan (VtpLayout.hpp) has passed.
+vtkSmartPointer<vtkPolyData> readPolyData(const std::string& path, const VtpLayout& layout) {
+  vtkNew<vtkXMLPolyDataReader> r;
+  vtkNew<MessageCapture> messages;
+  r->AddObserver(vtkCommand::ErrorEvent, messages);
+  r->AddObserver(vtkCommand::WarningEvent, messages);
+  r->SetReaderErrorObserver(messages);
+  r->SetParserErrorObserver(messages);
+  r->SetFileName(path.c_str());
+  const int ok = r->GetExecutive()->Update();
+  if (!ok || !messages->text.empty() || r->GetErrorCode() != 0)
+    corrupt(path, messages->text.empty() ? "VTK reader failed" : messages->text);
+  vtkSmartPointer<vtkPolyData> pd = r->GetOutput();
+  if (!pd) corrupt(path, "no PolyData in file");
+  if (pd->GetNumberOfPoints() != layout.points)
+    corrupt(path, "VTK read " + std::to_string(pd->GetNumberOfPoints()) + " points, the header states " +
+                      std::to_string(layout.points));
+  return pd;
 }
 
 }  // namespace
@@ -210,6 +263,10 @@ void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState&
   addFieldValue(fd, "timeIndex", std::int64_t(s.step));
   addFieldValue(fd, "deltaT", s.deltaT);
   addFieldValue(fd, "deltaT0", s.deltaT0);
+  const ParticleCounts c = countParticles(p);
+  addFieldValue(fd, "fluidParticles", *c.fluid);
+  addFieldValue(fd, "wallParticles", *c.wall);
+  addFieldValue(fd, "nextId", c.idLimit);
 
   fileops::failurePoint("write vtp", path);
   vtkNew<vtkXMLPolyDataWriter> w;
@@ -238,46 +295,32 @@ void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState&
 }
 
 template <int D>
-ParticleSet<D> readVtp(const std::string& path, TimeState* s) {
+ParticleSet<D> readVtp(const std::string& path, VtpTime* t) {
   if (!fileops::isRegularFile(path))
     throw InputError("cannot read particle file '" + path + "': " +
                      (fileops::isDirectory(path) ? std::string("it is a folder") : std::strerror(ENOENT)));
-  vtkNew<vtkXMLPolyDataReader> r;
-  vtkNew<MessageCapture> messages;
-  r->AddObserver(vtkCommand::ErrorEvent, messages);
-  r->AddObserver(vtkCommand::WarningEvent, messages);
-  r->SetReaderErrorObserver(messages);
-  r->SetParserErrorObserver(messages);
-  r->SetFileName(path.c_str());
-  int ok = 0;
-  ok = r->GetExecutive()->Update();
-  if (!ok || !messages->text.empty() || r->GetErrorCode() != 0)
-    corrupt(path, messages->text.empty() ? "VTK reader failed" : messages->text);
-  vtkPolyData* pd = r->GetOutput();
-  if (!pd) corrupt(path, "no PolyData in file");
-
-  vtkFieldData* fd = pd->GetFieldData();
-  std::int64_t dimension = fieldInt(path, fieldArray(path, fd, "dimension", true), "dimension");
+  const VtpLayout layout = scanVtpLayout(path);
+  const vtkSmartPointer<vtkPolyData> pd = readPolyData(path, layout);
+  const FieldValues f(path, pd->GetFieldData());
+  const std::int64_t dimension = *f.integer("dimension", 0, 1000, true);
   if (dimension != D)
     throw InputError("particle file '" + path + "' holds a " + std::to_string(dimension) +
                      "D particle set, but this run is " + std::to_string(D) + "D");
 
   ParticleSet<D> p;
-  p.mass = fieldDouble(path, fieldArray(path, fd, "mass", true), "mass");
-  p.rho0 = fieldDouble(path, fieldArray(path, fd, "rho0", true), "rho0");
-  p.spacing = fieldDouble(path, fieldArray(path, fd, "spacing", true), "spacing");
-  if (s) {
-    if (auto* a = fieldArray(path, fd, "time", false)) s->time = fieldDouble(path, a, "time");
-    if (auto* a = fieldArray(path, fd, "timeIndex", false)) s->step = long(fieldInt(path, a, "timeIndex"));
-    if (auto* a = fieldArray(path, fd, "deltaT", false)) s->deltaT = fieldDouble(path, a, "deltaT");
-    if (auto* a = fieldArray(path, fd, "deltaT0", false)) s->deltaT0 = fieldDouble(path, a, "deltaT0");
-  }
+  p.mass = f.positive("mass");
+  p.rho0 = f.positive("rho0");
+  p.spacing = f.positive("spacing");
+  VtpTime time;
+  time.time = f.real("time");
+  time.timeValue = f.real("TimeValue");
+  time.step = f.integer("timeIndex", 0, std::numeric_limits<long>::max());
+  time.deltaT = f.deltaT("deltaT", time.step);
+  time.deltaT0 = f.deltaT("deltaT0", time.step);
+  if (t) *t = time;
 
   const vtkIdType n = pd->GetNumberOfPoints();
-  if (n > 0) {
-    vtkDataArray* xyz = pd->GetPoints()->GetData();
-    readArray<D>(path, "position", xyz, n, p.position);
-  }
+  if (n > 0) readArray<D>(path, "position", pd->GetPoints()->GetData(), n, p.position);
   vtkPointData* pdata = pd->GetPointData();
   p.forEachField([&](const char* name, auto& v) {
     vtkAbstractArray* raw = pdata->GetAbstractArray(name);
@@ -289,12 +332,18 @@ ParticleSet<D> readVtp(const std::string& path, TimeState* s) {
     if (!a) corrupt(path, std::string("point-data array '") + name + "' is not numeric");
     readArray(path, name, a, n, v);
   });
+  // Files written before the counts were kept have dense ids 0..n-1.
+  ParticleCounts stated;
+  stated.fluid = f.integer("fluidParticles", 0, kMaxParticleId);
+  stated.wall = f.integer("wallParticles", 0, kMaxParticleId);
+  stated.idLimit = f.integer("nextId", 0, kMaxParticleId).value_or(n);
+  checkParticleValues<D>(path, p, stated);
   return p;
 }
 
 template void writeVtp<2>(const std::string&, const ParticleSet<2>&, const TimeState&);
 template void writeVtp<3>(const std::string&, const ParticleSet<3>&, const TimeState&);
-template ParticleSet<2> readVtp<2>(const std::string&, TimeState*);
-template ParticleSet<3> readVtp<3>(const std::string&, TimeState*);
+template ParticleSet<2> readVtp<2>(const std::string&, VtpTime*);
+template ParticleSet<3> readVtp<3>(const std::string&, VtpTime*);
 
 }  // namespace shizuku

@@ -7,6 +7,7 @@
 // ParticleGenerator.hpp.
 #include "particles/ParticleGenerator.hpp"
 #include "particles/MemoryCheck.hpp"
+#include "particles/WallLattice.hpp"
 #include "core/Log.hpp"
 #include "core/Parameter.hpp"
 #include <muParser.h>
@@ -238,6 +239,18 @@ Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, con
   return reg;
 }
 
+// "system/particlesDict:8:5: wall box 'tank': size 4 m in x is 133.33 spacings (d0 = 0.03 m);
+// faces along x use spacing 0.029851 m (134 intervals)"
+void warnWallResidual(const Dictionary& r, const std::string& name, int k, double size, double d0,
+                       const WallSpacing& a) {
+  std::ostringstream n;
+  n.precision(5);
+  n << a.spacings;
+  Log::get().warning(r.location("max").str() + ": wall box '" + name + "': size " + fmt(size) + " m in " + axisName(k) +
+                     " is " + n.str() + " spacings (d0 = " + fmt(d0) + " m); faces along " + axisName(k) +
+                     " use spacing " + fmt(a.spacing) + " m (" + std::to_string(a.intervals) + " intervals)");
+}
+
 template <int D>
 Region<D> readWall(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
                    double limit) {
@@ -260,19 +273,15 @@ Region<D> readWall(const Dictionary& r, const std::string& name, double d0, cons
     }
   }
   double inner = 1, outer = 1;
-  std::array<double, D> n;
   for (int k = 0; k < D; ++k) {
-    n[k] = std::round((reg.max[k] - reg.min[k]) / d0);
-    if (std::abs((reg.max[k] - reg.min[k]) / d0 - n[k]) > 1e-6)
-      r.error("max", std::string("the wall box size in ") + axisName(k) + " (" + fmt(reg.max[k] - reg.min[k]) +
-                         " m) is not a whole number of spacings (d0 = " + fmt(d0) +
-                         " m), so the wall particles would not sit on one lattice");
-    inner *= n[k];
-    outer *= n[k] + double(reg.layers) * (int(!reg.open[2 * k]) + int(!reg.open[2 * k + 1]));
+    const WallSpacing a = wallSpacing(reg.min[k], reg.max[k], d0);
+    if (!a.whole) warnWallResidual(r, name, k, reg.max[k] - reg.min[k], d0, a);
+    reg.cells[k] = a.intervals;
+    inner *= double(a.intervals);
+    outer *= double(a.intervals) + double(reg.layers) * (int(!reg.open[2 * k]) + int(!reg.open[2 * k + 1]));
   }
   if (outer - inner > limit) tooMany(regions, name, "wall", outer - inner, limit, d0);
   for (int k = 0; k < D; ++k) {
-    reg.cells[k] = long(n[k]);
     reg.outerMin[k] = reg.min[k] - (reg.open[2 * k] ? 0 : reg.layers * d0);
     reg.outerMax[k] = reg.max[k] + (reg.open[2 * k + 1] ? 0 : reg.layers * d0);
   }
@@ -302,21 +311,13 @@ void fillFluid(Region<D>& reg, double d0) {
   });
 }
 
+// The wall particles of one box: each face its own lattice (WallLattice.hpp).
 template <int D>
 void fillWall(Region<D>& reg, double d0) {
-  std::array<long, D> lo, hi;
-  for (int k = 0; k < D; ++k) {
-    lo[k] = reg.open[2 * k] ? 0 : -reg.layers;
-    hi[k] = reg.cells[k] + (reg.open[2 * k + 1] ? 0 : reg.layers);
-  }
-  forEachIndex<D>(lo, hi, [&](const std::array<long, D>& i) {
-    bool inside = true;
-    for (int k = 0; k < D; ++k) inside = inside && i[k] >= 0 && i[k] < reg.cells[k];
-    if (inside) return;
-    Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = reg.min[k] + (double(i[k]) + 0.5) * d0;
-    reg.points.push_back(x);
-  });
+  std::array<WallAxis, D> axes;
+  for (int k = 0; k < D; ++k)
+    axes[k] = wallAxis(reg.min[k], reg.max[k], d0, reg.layers, reg.open[2 * k], reg.open[2 * k + 1]);
+  wallBoxPoints<D>(axes, reg.points);
 }
 
 // Do the shapes of two fluid regions overlap (more than round-off)?

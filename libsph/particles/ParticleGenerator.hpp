@@ -39,11 +39,13 @@
 //
 // Wall regions
 //   shape box: min, max are the wall SURFACE (the inner faces); `layers N`
-//   rows of particles are built outside it on the lattice
-//   min + (i + 1/2) d0, corners included. `open (top)` lists faces that get no
+//   rows of particles are built outside it, corners included: on the lattice
+//   min + (i + 1/2) d0 where the size is a whole number of spacings, else each
+//   face its own lattice (WallLattice.hpp: ceil(L/d0) intervals of L/ceil(L/d0)
+//   <= d0 along the face, layers at d0 behind it), with a warning naming the
+//   region, the axis, L/d0 and the face spacing. `open (top)` lists faces that get no
 //   layers: left right bottom top (-x +x -y +y), in 3D also front back
-//   (-z +z); on an open side the other walls end at the box edge. The box
-//   size must be a whole number of spacings (else InputError). Wall particles
+//   (-z +z); on an open side the other walls end at the box edge. Wall particles
 //   closer than 0.5 d0 to an earlier wall particle are dropped (walls that
 //   share layers do not double them). Wall velocity is 0.
 //

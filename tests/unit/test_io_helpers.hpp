@@ -68,7 +68,7 @@ ParticleSet<D> randomSet(std::size_t n, bool optional, std::uint64_t seed) {
     p.density[i] = awkward(g);
     p.type[i] = std::uint8_t(g() % 2);
     p.surface[i] = std::uint8_t(g() % 4);
-    p.id[i] = std::int64_t(g());  // full 64-bit range: a trip through double would lose bits
+    p.id[i] = std::int64_t(g() >> 2);  // ids up to 2^62 (RestartChecks.hpp): a trip through double would lose bits
   }
   if (optional) {
     p.shift.resize(n);
