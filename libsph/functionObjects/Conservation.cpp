@@ -44,6 +44,8 @@ ConservationValues<D> Conservation<D>::compute(const FlowState<D>& s) {
   ConservationValues<D> v;
   v.volume = t.volume;
   v.nominalVolume = t.count * m / s.rho0;
+  v.fluidMass = t.count * m;
+  v.removedMass = s.removedMass;
   v.kineticEnergy = t.kinetic;
   v.momentum = t.momentum;
   if constexpr (D == 2) v.angularMomentum[0] = t.angular[2];
@@ -59,10 +61,12 @@ void Conservation<D>::open(const FlowState<D>&, const RunInfo& info) {
                      "volume = sum m/<rho>_i (eq. 18); nominalVolume = N_fluid m/rho0; "
                      "kineticEnergy = sum m|u|^2/2;\n",
                      "momentum = sum m u; angularMomentum = sum m r x u about the origin",
-                     D == 2 ? " (z component)" : ""));
-  this->file_->columns({"time", "volume", "nominalVolume", "kineticEnergy", "momentum", "angularMomentum"},
+                     D == 2 ? " (z component)" : "", ";\n",
+                     "fluidMass = N_fluid m; removedMass: fluid removed through the domain's bounds since the start"));
+  this->file_->columns({"time", "volume", "nominalVolume", "kineticEnergy", "momentum", "angularMomentum", "fluidMass",
+                        "removedMass"},
                  {"s", units::volume(D), units::volume(D), units::energy(D), units::momentum(D),
-                  units::angularMomentum(D)});
+                  units::angularMomentum(D), units::mass(D), units::mass(D)});
 }
 
 template <int D>
@@ -73,6 +77,7 @@ void Conservation<D>::sample(const FlowState<D>& s, const RunInfo&) {
                     F::number(v.kineticEnergy) + " " + F::vector<D>(v.momentum) + " ";
   if constexpr (D == 2) row += F::number(v.angularMomentum[0]);
   else row += F::vector<3>(v.angularMomentum);
+  row += " " + F::number(v.fluidMass) + " " + F::number(v.removedMass);
   this->file_->row(row);
 }
 

@@ -5,7 +5,12 @@
 //   kineticEnergy  = sum_i 0.5 m |u_i|^2
 //   momentum       = sum_i m u_i                  (vector)
 //   angularMomentum= sum_i m r_i x u_i about the origin (z component in 2D, vector in 3D)
-// File conservation.dat: time, volume, nominalVolume, kineticEnergy, momentum, angularMomentum.
+//   fluidMass      = N_fluid m
+//   removedMass    = the mass of the fluid particles removed through the domain's bounds
+//                    since the start (FlowState::removedMass): fluidMass + removedMass is
+//                    the initial fluid mass to round-off
+// File conservation.dat: time, volume, nominalVolume, kineticEnergy, momentum, angularMomentum,
+// fluidMass, removedMass.
 // Reads (controlDict functions/<name>): type conservation; writeControl; writeInterval.
 #pragma once
 #include "core/BlockReduce.hpp"
@@ -17,7 +22,7 @@ namespace shizuku {
 template <int D>
 struct ConservationValues {
   using Angular = Eigen::Matrix<double, D == 2 ? 1 : 3, 1>;  // z only in 2D
-  double volume = 0, nominalVolume = 0, kineticEnergy = 0;
+  double volume = 0, nominalVolume = 0, kineticEnergy = 0, fluidMass = 0, removedMass = 0;
   Vec<D> momentum = Vec<D>::Zero();
   Angular angularMomentum = Angular::Zero();
 };

@@ -44,6 +44,7 @@ class SampledFunctionObject : public FunctionObject<D> {
 // SI units of a few quantities in D dimensions (2D quantities are per unit depth).
 namespace units {
 inline std::string volume(int D) { return D == 2 ? "m^2" : "m^3"; }
+inline std::string mass(int D) { return D == 2 ? "kg/m" : "kg"; }
 inline std::string energy(int D) { return D == 2 ? "J/m" : "J"; }
 inline std::string momentum(int D) { return D == 2 ? "kg/s" : "kg*m/s"; }
 inline std::string angularMomentum(int D) { return D == 2 ? "kg*m/s" : "kg*m^2/s"; }

@@ -27,6 +27,8 @@ struct TimeState {
   double deltaT = 0;   // s, the next step's dt
   double deltaT0 = 0;  // s, the previous step's dt
   std::string note;    // free text (e.g. "written after a NumericalError")
+  double removedMass = 0;  // kg (kg/m in 2D), fluid removed through the domain's bounds so far
+  long removedCount = 0;   // particles removed so far
 };
 
 // Throws std::runtime_error naming the path and strerror on any failure; an

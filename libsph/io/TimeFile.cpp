@@ -130,6 +130,10 @@ std::string formatTimeFile(const TimeState& s, const std::string& timeName) {
   o << "deltaT   " << exactNumber(s.deltaT) << ";   // s, next step\n";
   o << "deltaT0  " << exactNumber(s.deltaT0) << ";   // s, previous step\n";
   if (!s.note.empty()) o << "note     " << quoted(s.note) << ";\n";
+  if (s.removedCount > 0) {
+    o << "removedMass   " << exactNumber(s.removedMass) << ";   // fluid removed through the domain's bounds\n";
+    o << "removedCount  " << s.removedCount << ";\n";
+  }
   return o.str();
 }
 
@@ -159,6 +163,15 @@ TimeState readTimeFile(const std::string& path, const std::string& folderName) {
           std::string("keyword '") + k + "': " + exactNumber(dt) + " is not a positive finite time step");
   }
   if (e.count("note")) s.note = e.at("note").text;
+  if (e.count("removedMass")) s.removedMass = number(path, e, "removedMass");
+  if (!std::isfinite(s.removedMass) || s.removedMass < 0)
+    bad(path, e.at("removedMass").line, "keyword 'removedMass': " + exactNumber(s.removedMass) + " is not a mass >= 0");
+  if (e.count("removedCount")) {
+    const double n = number(path, e, "removedCount");
+    if (!(n >= 0 && n <= 9e15 && n == std::floor(n)))
+      bad(path, e.at("removedCount").line, "keyword 'removedCount': " + exactNumber(n) + " is not a whole number >= 0");
+    s.removedCount = long(n);
+  }
   if (!folderName.empty()) checkFolderName(path, e, s.time, folderName);
   return s;
 }

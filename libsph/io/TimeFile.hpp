@@ -6,10 +6,12 @@
 //   deltaT   0.0001;    // s, dt of the next step
 //   deltaT0  0.0001;    // s, dt of the previous step
 //   note     "...";     // optional free text
+//   removedMass 0.5;    // optional: fluid removed through the domain's bounds so far
+//   removedCount 12;    // optional: particles removed so far
 // A restart (startFrom latestTime) reads it back and continues exactly.
 // This small reader understands only this flat form (keyword value;) plus
 // comments; unknown keywords are ignored so later versions can add some.
-// Dictionary keys read: value, name, index, deltaT, deltaT0, note.
+// Dictionary keys read: value, name, index, deltaT, deltaT0, note, removedMass, removedCount.
 #pragma once
 #include "io/TimeDirectory.hpp"
 #include <string>

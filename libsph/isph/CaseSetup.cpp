@@ -66,11 +66,12 @@ NumericalScheme<D> CaseSetup<D>::readScheme(const CaseFiles& files, FlowState<D>
 
 template <int D>
 std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunControl& rc, bool postProcessing,
-                                           FlowState<D>& s) {
+                                           FlowState<D>& s, std::vector<WallBox<D>>& walls) {
   // The generator always reads particlesDict (it checks it and gives the periodic box);
   // its particles are used when the start time has none.
   GeneratedParticles<D> gen = generateParticles<D>(files.particlesDict);
   s.periodic = gen.periodic;
+  walls = gen.walls;
   checkPeriodicLength(files.particlesDict, s);
   const auto times = listTimeDirectories(files.dir);
   std::string startName;
@@ -86,6 +87,8 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
     s.time = ts.time;
     s.step = ts.step;
     s.dt = ts.deltaT;
+    s.removedMass = ts.removedMass;
+    s.removedCount = ts.removedCount;
   } else {
     s.particles = std::move(gen.set);
     s.particles.rho0 = s.rho0;

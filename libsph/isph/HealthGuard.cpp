@@ -18,10 +18,15 @@ const ParameterGroup health("system/controlDict: healthChecks",
     "Guards checked after every step: a failure stops the run (exit 2) with the last good state written.");
 const ScalarParameter maxDensityErrorRms = health.scalar("maxDensityErrorRms", dim::none,
     "largest interior density error rms, % (eq. 22)").def(20).above(0).max(100);
-const ScalarParameter domainMargin = health.scalar("domainMargin", dim::none,
-    "the domain box: the initial extent widened on each side by this, times the extent").def(0.5).min(0).max(1e6);
 const ScalarParameter maxSpeed = health.scalar("maxSpeed", dim::velocity, "largest fluid speed")
     .def(0).shownDefault("0 (10 x max(initial speed, sqrt(2 g L)))").min(0);
+const ScalarParameter maxLostFraction = health.scalar("maxLostFraction", dim::none,
+    "largest mass removed through the domain's bounds, over the initial fluid mass").def(0.01).min(0).max(1);
+const IntParameter maxLeaks = health.integer("maxLeaks", "largest number of fluid particles found in or through a wall")
+    .def(0).min(0);
+const ScalarParameter domainMargin = health.scalar("domainMargin", dim::none,
+    "retired: read and ignored with a warning (the domain is controlDict `domain`, removal is limited by "
+    "maxLostFraction)").def(0.5).min(0).max(1e6);
 }  // namespace key
 }  // namespace
 
@@ -29,8 +34,16 @@ template <int D>
 HealthGuard<D>::HealthGuard(const Dictionary& controlDict) {
   const Dictionary* hc = controlDict.subDictPtr("healthChecks");
   limits_.maxDensityErrorRms = key::maxDensityErrorRms.read(hc);
-  limits_.domainMargin = key::domainMargin.read(hc);
   limits_.maxSpeed = key::maxSpeed.read(hc);
+  limits_.maxLostFraction = key::maxLostFraction.read(hc);
+  limits_.maxLeaks = key::maxLeaks.read(hc);
+  if (hc && hc->found("domainMargin")) {
+    key::domainMargin.read(*hc);
+    Log::get().warning(cat(hc->location("domainMargin").str(), ": healthChecks/domainMargin is retired and ignored: "
+                           "a fluid particle that leaves the domain (controlDict `domain { min (..); max (..); }`, "
+                           "default: the walls' box extended beyond each open face) is removed, and the run stops "
+                           "only when the removed mass passes healthChecks/maxLostFraction"));
+  }
 }
 
 template <int D>
@@ -39,8 +52,6 @@ void HealthGuard<D>::setLimits(const FlowState<D>& s, const Vec<D>& g) {
   Vec<D> lo = P.position[0], hi = P.position[0];
   for (const auto& x : P.position) { lo = lo.cwiseMin(x); hi = hi.cwiseMax(x); }
   const Vec<D> ext = (hi - lo).cwiseMax(Vec<D>::Constant(s.d0));
-  limits_.domainMin = lo - limits_.domainMargin * ext;
-  limits_.domainMax = hi + limits_.domainMargin * ext;
   // No flow of this case can exceed ten times the larger of its starting speed and the
   // free-fall speed over the largest extent of the domain.
   if (limits_.maxSpeed == 0) {
@@ -56,19 +67,13 @@ template <int D>
 double HealthGuard<D>::check(const FlowState<D>& s, const char* where, const std::string& caseDir) {
   const auto& P = s.particles;
   const long n = long(s.size());
-  // Offending particles: every non-finite one and every one outside the domain box.
+  // Offending particles: every non-finite one.
   offending_.clear();
-  bool nonFinite = false;
   double maxU = 0;
   long fastest = -1;
   for (long i = 0; i < n; ++i) {
     if (!s.isFluid(i)) continue;
-    const bool finite = P.position[i].allFinite() && P.velocity[i].allFinite() && std::isfinite(P.pressure[i]);
-    bool outside = false;
-    for (int a = 0; a < D && finite; ++a)
-      outside |= P.position[i][a] < limits_.domainMin[a] || P.position[i][a] > limits_.domainMax[a];
-    if (!finite || outside) {
-      nonFinite |= !finite;
+    if (!(P.position[i].allFinite() && P.velocity[i].allFinite() && std::isfinite(P.pressure[i]))) {
       offending_.push_back(Index(i));
       continue;
     }
@@ -77,21 +82,8 @@ double HealthGuard<D>::check(const FlowState<D>& s, const char* where, const std
   }
   auto at = [&] { return cat(" at step ", s.step, ", time ", s.time); };  // built only on failure
   auto id = [&](long i) { return P.id[std::size_t(i)]; };
-  if (!offending_.empty()) {
-    if (nonFinite) {
-      // Name a non-finite particle first.
-      for (std::size_t k = 0; k < offending_.size(); ++k) {
-        const Index i = offending_[k];
-        if (!(P.position[i].allFinite() && P.velocity[i].allFinite() && std::isfinite(P.pressure[i]))) {
-          std::swap(offending_[0], offending_[k]);
-          break;
-        }
-      }
-      fail(s, cat("non-finite position, velocity or pressure ", where, ": particle id ", id(offending_[0]), at()), caseDir);
-    }
-    fail(s, cat("particle id ", id(offending_[0]), " left the domain ", where, at(), " (position ",
-                P.position[offending_[0]].transpose(), "; limits set by healthChecks/domainMargin)"), caseDir);
-  }
+  if (!offending_.empty())
+    fail(s, cat("non-finite position, velocity or pressure ", where, ": particle id ", id(offending_[0]), at()), caseDir);
   if (maxU > limits_.maxSpeed) {
     offending_.push_back(Index(fastest));
     fail(s, cat("particle id ", id(fastest), " moves at ", maxU, " m/s ", where, at(), " (position ",
@@ -108,6 +100,13 @@ double HealthGuard<D>::check(const FlowState<D>& s, const char* where, const std
                 std::abs(densityErrorPercent(s.rho0, P.density[worst])), " %)"), caseDir);
   }
   return maxU;
+}
+
+template <int D>
+void HealthGuard<D>::failWith(const FlowState<D>& s, const std::string& message, const std::vector<Index>& offending,
+                              const std::string& caseDir) {
+  offending_ = offending;
+  fail(s, message, caseDir);
 }
 
 template <int D>
@@ -166,6 +165,9 @@ void HealthGuard<D>::saveGoodState(const FlowState<D>& s) {
   goodU_ = P.velocity;
   goodP_ = P.pressure;
   goodId_ = P.id;
+  goodType_ = P.type;
+  goodRemovedMass_ = s.removedMass;
+  goodRemovedCount_ = s.removedCount;
   goodTime_ = s.time;
   goodStep_ = s.step;
   goodDt_ = s.dt;
@@ -174,10 +176,16 @@ void HealthGuard<D>::saveGoodState(const FlowState<D>& s) {
 template <int D>
 void HealthGuard<D>::restoreGoodState(FlowState<D>& s) const {
   auto& P = s.particles;
+  P.resize(goodX_.size());  // particles removed during the step come back
   P.position = goodX_;
   P.velocity = goodU_;
   P.pressure = goodP_;
   P.id = goodId_;
+  P.type = goodType_;
+  s.isFluidMask.resize(P.size());
+  for (std::size_t i = 0; i < P.size(); ++i) s.isFluidMask[i] = P.isFluid(i);
+  s.removedMass = goodRemovedMass_;
+  s.removedCount = goodRemovedCount_;
   s.time = goodTime_;
   s.step = goodStep_;
   s.dt = goodDt_;

@@ -1,14 +1,15 @@
 // The health guard of a run (docs/design.md 1.3, docs/solver.md "Health checks"): after
 // every step it checks the fluid particles and stops the run with a NumericalError naming
-// the first offending particle when one is non-finite, outside the domain box, faster than
-// maxSpeed, or when the interior density error rms (eq. 22) exceeds maxDensityErrorRms.
+// the first offending particle when one is non-finite or faster than maxSpeed, or when the
+// interior density error rms (eq. 22) exceeds maxDensityErrorRms. The outflow (Outflow.hpp)
+// fails through it when the removed mass or the wall leaks pass their limits.
 // The offending particles go to postProcessing/healthChecks/<time>/offending.vtp. It also
 // keeps the last good state (the start of the current step), which the time loop writes
 // after a failure.
-// Reads (system/controlDict, healthChecks): maxDensityErrorRms (%), domainMargin (times the
-// initial extent, on each side), maxSpeed (m/s; 0: ten times the larger of the fastest
-// initial speed and the free-fall speed sqrt(2 |g| L) over the largest extent L); declared
-// in HealthGuard.cpp.
+// Reads (system/controlDict, healthChecks): maxDensityErrorRms (%), maxSpeed (m/s; 0: ten
+// times the larger of the fastest initial speed and the free-fall speed sqrt(2 |g| L) over
+// the largest extent L), maxLostFraction (of the initial fluid mass), maxLeaks; declared in
+// HealthGuard.cpp. domainMargin is retired: read with a warning naming the new keys.
 #pragma once
 #include "core/Dictionary.hpp"
 #include "operators/DensityErrorMeasure.hpp"
@@ -19,16 +20,16 @@ namespace shizuku {
 
 struct HealthLimits {
   double maxDensityErrorRms = 20;        // % over interior particles
-  double domainMargin = 0.5;             // times the initial extent, on each side
   double maxSpeed = 0;                   // m/s; 0: automatic
-  Eigen::VectorXd domainMin, domainMax;  // fluid particles must stay inside
+  double maxLostFraction = 0.01;         // removed mass over the initial fluid mass
+  long maxLeaks = 0;                     // fluid particles through the walls
 };
 
 template <int D>
 class HealthGuard {
  public:
   explicit HealthGuard(const Dictionary& controlDict);
-  // The domain box from the initial extent of all particles, and the automatic speed limit.
+  // The automatic speed limit, from the initial extent of all particles.
   void setLimits(const FlowState<D>& s, const Vec<D>& gravity);
   const HealthLimits& limits() const { return limits_; }
   // Throws NumericalError on a failed check (`where`: "after the step", ...); returns the
@@ -38,7 +39,14 @@ class HealthGuard {
   // The density error of the last check (eq. 22), for the progress line.
   const DensityErrorSummary& densityError() const { return density_; }
 
+  // Stops the run (NumericalError) with `offending` (indices) written as the offending particles.
+  [[noreturn]] void failWith(const FlowState<D>& s, const std::string& message, const std::vector<Index>& offending,
+                             const std::string& caseDir);
+
   void saveGoodState(const FlowState<D>& s);
+  // The positions at the start of the current step, in the current particle order.
+  const std::vector<Vec<D>>& goodPositions() const { return goodX_; }
+  // The state at the start of the current step, also when particles were removed since.
   void restoreGoodState(FlowState<D>& s) const;
 
  private:
@@ -51,7 +59,9 @@ class HealthGuard {
   std::vector<Vec<D>> goodX_, goodU_;
   std::vector<double> goodP_;
   std::vector<std::int64_t> goodId_;
-  double goodTime_ = 0, goodDt_ = 0;
+  std::vector<std::uint8_t> goodType_;
+  double goodTime_ = 0, goodDt_ = 0, goodRemovedMass_ = 0;
+  long goodRemovedCount_ = 0;
   long goodStep_ = 0;
 };
 

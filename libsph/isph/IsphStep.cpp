@@ -188,6 +188,23 @@ void IsphStep<D>::reorderParticles() {
 }
 
 template <int D>
+void IsphStep<D>::particleCountChanged() {
+  const std::size_t n = s_.size();
+  s_.isFluidMask.resize(n);
+  for (std::size_t i = 0; i < n; ++i) s_.isFluidMask[i] = s_.particles.isFluid(i);
+  s_.uStar.resize(n);
+  s_.acceleration.resize(n);
+  if (needs_.surfaceFit) {
+    s_.fitDistance.resize(n, NAN);
+    s_.fitNormal.resize(n, Vec<D>::Zero());
+    s_.curvature.resize(n, NAN);
+  }
+  if (!du_.empty()) du_.resize(n);
+  source_.resize(n);
+  effects_.allocate(s_);  // the effects' scratch (re-zeroed; refilled every step)
+}
+
+template <int D>
 std::vector<std::string> IsphStep<D>::describe() const {
   std::vector<std::string> v;
   auto line = [&](const std::string& what) { v.push_back(what); };

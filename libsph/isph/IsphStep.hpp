@@ -52,6 +52,9 @@ class IsphStep {
   void advance(double dt);
   // Sorts the particles along the neighbour cells (memory locality); the analysis must follow.
   void reorderParticles();
+  // Resizes the per-particle arrays after particles were removed (or restored); no
+  // allocation when the count shrank. The analysis must follow.
+  void particleCountChanged();
 
   const EffectSet<D>& effects() const { return effects_; }
   const NumericalScheme<D>& scheme() const { return scheme_; }

@@ -23,7 +23,10 @@ std::string progressLine(const ProgressInfo& p, const StepReport& r) {
              " it, res ", std::setprecision(2), r.ppe.residual, std::setprecision(6),
              r.ppeStandardRows ? cat(" (", r.ppeStandardRows, " std rows)") : "", "  max|U| = ", r.maxSpeed,
              "  rhoErr rms = ", std::setprecision(3), p.densityErrorRms, std::setprecision(6), " %",
-             r.adsCount >= 0 ? cat("  ADS ", r.adsCount) : "", "  ", std::fixed, std::setprecision(1), 100 * frac,
+             r.adsCount >= 0 ? cat("  ADS ", r.adsCount) : "",
+             p.removed > 0 ? cat("  removed ", p.removed, " (", std::setprecision(3), 100 * p.removedFraction,
+                                 std::setprecision(6), " %)") : "",
+             p.leaks > 0 ? cat("  leaks ", p.leaks) : "", "  ", std::fixed, std::setprecision(1), 100 * frac,
              std::defaultfloat, std::setprecision(6), "% done, ETA ",
              formatSeconds(frac > 0 ? p.wallSeconds * (1 - frac) / frac : NAN));
 }

@@ -18,9 +18,12 @@ struct ProgressInfo {
   double densityErrorRms = 0;  // interior, % (eq. 22)
   double fractionDone = 0;
   double wallSeconds = 0;
+  long removed = 0;            // fluid particles removed through the domain's bounds so far
+  double removedFraction = 0;  // their mass over the initial fluid mass
+  long leaks = 0;              // wall leaks found so far
 };
 
-// "step N  t = ..  dt = .. (limiter)  PPE .. it, res ..  max|U| = ..  rhoErr rms = .. %  ADS ..  x% done, ETA .."
+// "step N  t = ..  dt = .. (limiter)  PPE .. it, res ..  max|U| = ..  rhoErr rms = .. %  ADS ..  removed N (f %)  leaks N  x% done, ETA .."
 std::string progressLine(const ProgressInfo& p, const StepReport& r);
 
 struct RunSummary {

@@ -17,8 +17,10 @@ Simulation<D>::Simulation(const std::string& caseDir, const SimulationOptions& o
   const PhysicalConstants<D> physics = CaseSetup<D>::readPhysicalConstants(files_, s_);
   NumericalScheme<D> scheme = CaseSetup<D>::readScheme(files_, s_);
   guard_ = std::make_unique<HealthGuard<D>>(files_.controlDict);
-  startTimeName_ = CaseSetup<D>::readInitialState(files_, rc_, opt_.postProcessing, s_);
+  std::vector<WallBox<D>> walls;
+  startTimeName_ = CaseSetup<D>::readInitialState(files_, rc_, opt_.postProcessing, s_, walls);
   guard_->setLimits(s_, physics.g);
+  outflow_ = std::make_unique<Outflow<D>>(Domain<D>::read(files_.controlDict, walls, s_.particles), walls);
   EffectSet<D> effects = EffectSet<D>::build(files_.gravity ? &*files_.gravity : nullptr, files_.physicalProperties,
                                              physics.nu, files_.sphSchemes, s_);
   step_ = std::make_unique<IsphStep<D>>(s_, std::move(scheme), std::move(effects), timers_);
@@ -41,6 +43,7 @@ std::string Simulation<D>::pipeline() const {
   int k = 1;
   auto line = [&](const std::string& what) { os << "  " << k++ << ". " << what << "\n"; };
   for (const auto& l : step_->describe()) line(l);
+  line(outflow_->describe(guard_->limits()));
   for (const auto& f : functionObjects_) line(cat("function object ", f->name(), ": ", f->type(), " (", f->describe(), ")"));
   line(cat("time: ", rc_.adjustTimeStep ? cat("adjustable dt, maxCo ", rc_.maxCo) : cat("fixed dt ", rc_.deltaT, " s"),
            ", end ", rc_.endTime, " s"));
@@ -49,7 +52,7 @@ std::string Simulation<D>::pipeline() const {
 
 template <int D>
 int Simulation<D>::run() {
-  TimeLoop<D> loop(files_, rc_, s_, *step_, *guard_, functionObjects_, timers_, startTimeName_);
+  TimeLoop<D> loop(files_, rc_, s_, *step_, *guard_, *outflow_, functionObjects_, timers_, startTimeName_);
   return loop.run(pipeline());
 }
 
@@ -72,6 +75,8 @@ void Simulation<D>::loadTime(const std::string& name) {
   s_.time = ts.time;
   s_.step = ts.step;
   s_.dt = ts.deltaT;
+  s_.removedMass = ts.removedMass;
+  s_.removedCount = ts.removedCount;
   const std::size_t n = s_.particles.size();
   s_.isFluidMask.resize(n);
   for (std::size_t i = 0; i < n; ++i) s_.isFluidMask[i] = s_.particles.isFluid(i);

@@ -13,6 +13,7 @@
 #include "isph/CaseFiles.hpp"
 #include "isph/HealthGuard.hpp"
 #include "isph/IsphStep.hpp"
+#include "isph/Outflow.hpp"
 #include "isph/StopRequests.hpp"
 #include <memory>
 #include <string>
@@ -57,6 +58,7 @@ class Simulation {
   std::vector<std::unique_ptr<FunctionObject<D>>>& functionObjects() { return functionObjects_; }
   // Statistics of the last step, for the progress line and tests.
   const StepReport& lastStep() const { return step_->report(); }
+  const Outflow<D>& outflow() const { return *outflow_; }
 
  private:
   CaseFiles files_;
@@ -66,6 +68,7 @@ class Simulation {
   StageTimers timers_;
   std::unique_ptr<IsphStep<D>> step_;
   std::unique_ptr<HealthGuard<D>> guard_;
+  std::unique_ptr<Outflow<D>> outflow_;
   std::vector<std::unique_ptr<FunctionObject<D>>> functionObjects_;
   std::string startTimeName_;
 };

@@ -22,9 +22,9 @@ double clockSeconds() {
 
 template <int D>
 TimeLoop<D>::TimeLoop(const CaseFiles& files, const RunControl& rc, FlowState<D>& s, IsphStep<D>& step,
-                      HealthGuard<D>& guard, std::vector<std::unique_ptr<FunctionObject<D>>>& functionObjects,
+                      HealthGuard<D>& guard, Outflow<D>& outflow, std::vector<std::unique_ptr<FunctionObject<D>>>& functionObjects,
                       StageTimers& timers, const std::string& startTimeName)
-    : files_(files), rc_(rc), s_(s), step_(step), guard_(guard), functionObjects_(functionObjects), timers_(timers),
+    : files_(files), rc_(rc), s_(s), step_(step), guard_(guard), outflow_(outflow), functionObjects_(functionObjects), timers_(timers),
       startTimeName_(startTimeName) {
   functionObjectTimer_ = timers_.stage("functionObjects");
   outputTimer_ = timers_.stage("output");
@@ -75,6 +75,8 @@ void TimeLoop<D>::writeTime(const std::string& reason) {
   ts.deltaT = s_.dt;
   ts.deltaT0 = s_.dt;
   ts.note = reason;
+  ts.removedMass = s_.removedMass;
+  ts.removedCount = s_.removedCount;
   const std::string name = timeName(s_.time);
   writeTimeDirectory<D>(files_.dir, name, s_.particles, ts, rc_.ascii);
   written_.push_back(name);
@@ -108,6 +110,7 @@ void TimeLoop<D>::start() {
   step_.analyse();
   // The initial write comes first: if it fails, no function-object file has been opened (truncated).
   if (freshStart) writeTime("initial particles");
+  outflow_.start(s_, files_.dir, startTimeName_);
   for (auto& f : functionObjects_) f->start(s_, startInfo);
   step_.report().maxSpeed = guard_.check(s_, "in the initial state", files_.dir);
   runFunctionObjects(freshStart, 0, 0);
@@ -127,6 +130,10 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
   step_.advance(dt);
   previousDt = dt;
   particleSteps += fluidCount_;
+  if (outflow_.afterStep(s_, guard_.goodPositions(), guard_)) {
+    step_.particleCountChanged();
+    fluidCount_ = double(s_.particles.countFluid());
+  }
   step_.analyse();
   step_.report().maxSpeed = guard_.check(s_, "after the step", files_.dir);
   const bool scheduled = rc_.isWriteStep(s_.time, s_.step);
@@ -145,6 +152,9 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
     p.densityErrorRms = guard_.densityError().interior.count > 0 ? guard_.densityError().interior.rms : 0.0;
     p.fractionDone = (s_.time - startTime_) / span_;
     p.wallSeconds = clockSeconds() - wallStart;
+    p.removed = s_.removedCount;
+    p.removedFraction = s_.removedMass / std::max(s_.removedMass + fluidCount_ * s_.particles.mass, 1e-300);
+    p.leaks = outflow_.leakCount();
     info(progressLine(p, step_.report()));
   }
   return stopNow;
@@ -179,6 +189,7 @@ template <int D>
 void TimeLoop<D>::writeLastGoodState(const NumericalError& e) {
   Log::get().error(cat("numerical failure: ", e.what()));
   guard_.restoreGoodState(s_);
+  step_.particleCountChanged();
   info(cat("Writing the last good state (time ", s_.time, ", step ", s_.step, ")"));
   try {
     step_.analyse();

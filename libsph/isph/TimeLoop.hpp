@@ -1,5 +1,5 @@
 // The time loop of a run (docs/design.md 1.3, docs/method.md 4.3): the time-step choice,
-// the step, the health check, writes that land on the write interval, stop requests
+// the step, leaks and the removal of fluid that left the domain (Outflow), the health check, writes that land on the write interval, stop requests
 // (signals, `stopAt writeNow`), function objects, the progress line and the summary.
 // After a numerical failure it writes the last good state and returns exit status 2.
 // Reads the RunControl of system/controlDict (startTime, endTime, deltaT, adjustTimeStep,
@@ -10,6 +10,7 @@
 #include "isph/CaseFiles.hpp"
 #include "isph/HealthGuard.hpp"
 #include "isph/IsphStep.hpp"
+#include "isph/Outflow.hpp"
 #include "isph/StopRequests.hpp"
 #include "isph/TimeStepFloor.hpp"
 #include <memory>
@@ -22,7 +23,7 @@ template <int D>
 class TimeLoop {
  public:
   TimeLoop(const CaseFiles& files, const RunControl& rc, FlowState<D>& s, IsphStep<D>& step, HealthGuard<D>& guard,
-           std::vector<std::unique_ptr<FunctionObject<D>>>& functionObjects, StageTimers& timers,
+           Outflow<D>& outflow, std::vector<std::unique_ptr<FunctionObject<D>>>& functionObjects, StageTimers& timers,
            const std::string& startTimeName);
   // Runs from the current state to endTime; returns 0, or 2 after a numerical failure.
   int run(const std::string& pipeline);
@@ -47,6 +48,7 @@ class TimeLoop {
   FlowState<D>& s_;
   IsphStep<D>& step_;
   HealthGuard<D>& guard_;
+  Outflow<D>& outflow_;
   std::vector<std::unique_ptr<FunctionObject<D>>>& functionObjects_;
   StageTimers& timers_;
   std::string startTimeName_;

@@ -26,6 +26,10 @@ struct FlowState {
   // time
   double time = 0, dt = 0;
   long step = 0;
+  // fluid that left the domain since the start from particlesDict (kept across restarts
+  // in uniform/time), for the mass balance and healthChecks/maxLostFraction
+  double removedMass = 0;
+  long removedCount = 0;
 
   // per-step derived fields (sized once, reused every step)
   std::vector<double> divR;              // -sum V r_ij . gradW_ij (free-surface indicator, docs/method.md 5.1)

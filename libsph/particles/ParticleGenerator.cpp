@@ -669,6 +669,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
     fluidVelocity.insert(fluidVelocity.end(), u.begin(), u.end());
   }
   dict.checkAllRead();
+  for (const auto& w : walls) out.walls.push_back({w.name, w.min, w.max, w.outerMin, w.outerMax, w.open, w.layers, d0});
 
   // 4. The particle set: fluid first, then walls. (A disc's count was
   // estimated from its area; the exact count is checked here.)

@@ -72,6 +72,7 @@
 #include "core/Dictionary.hpp"
 #include "particles/NeighbourList.hpp"
 #include "particles/ParticleSet.hpp"
+#include "particles/WallBox.hpp"
 
 namespace shizuku {
 
@@ -79,6 +80,7 @@ template <int D>
 struct GeneratedParticles {
   ParticleSet<D> set;
   PeriodicBox<D> periodic;
+  std::vector<WallBox<D>> walls;  // the wall regions, in file order
 };
 
 // Default of the `maxParticles` keyword.

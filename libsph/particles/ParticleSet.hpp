@@ -50,6 +50,21 @@ struct ParticleSet {
       if (!v.empty() || isMandatory(name)) v.resize(n);
     });
   }
+  // Remove the particles with remove[i] != 0, keeping the order of the others (ids
+  // unchanged): every present field is compacted in place, capacity kept. Returns the
+  // new size.
+  std::size_t removeMarked(const std::vector<std::uint8_t>& remove) {
+    auto compact = [&](auto& v) {
+      if (v.size() != remove.size()) return;
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < v.size(); ++i)
+        if (!remove[i]) v[k++] = v[i];
+      v.resize(k);
+    };
+    compact(position);
+    forEachField([&](const char*, auto& v) { compact(v); });
+    return position.size();
+  }
   static bool isMandatory(const std::string& name) {
     return name == "U" || name == "p" || name == "rhoN" || name == "type" || name == "surface" || name == "id";
   }

@@ -1,0 +1,46 @@
+// Wall leaks (docs/boundaries.md, "Domain, outflow and leaks"): a fluid particle that
+//   - lies inside a wall box's layer region deeper than half a spacing past the wall
+//     surface (at or beyond the first row of wall particles), or
+//   - crossed the layers of a closed wall face since the previous step (was on one side
+//     of them and is now on the other, through the face),
+// has leaked through the wall. O(N x walls) per step, no allocation once `leaks` has
+// its capacity. Open faces are not checked (fluid may leave through them).
+// Reads no dictionary keys (the walls come from particlesDict through the generator).
+#pragma once
+#include "particles/NeighbourList.hpp"
+#include "particles/ParticleSet.hpp"
+#include "particles/WallBox.hpp"
+#include <string>
+#include <vector>
+
+namespace shizuku {
+
+struct Leak {
+  Index particle = 0;   // index in the particle arrays
+  int wall = 0;         // index in walls()
+  int face = 0;         // 2k (-x_k) or 2k + 1 (+x_k)
+  bool crossed = false; // crossed the layers in one step (else: found inside them)
+};
+
+template <int D>
+class LeakDetector {
+ public:
+  explicit LeakDetector(std::vector<WallBox<D>> walls) : walls_(std::move(walls)) {}
+  bool active() const { return !walls_.empty(); }
+  const std::vector<WallBox<D>>& walls() const { return walls_; }
+  // The leaks of the fluid particles of p; `previous` holds their positions one step
+  // earlier, same order (empty: the crossing test is skipped). Sorted by particle.
+  void find(const ParticleSet<D>& p, const std::vector<Vec<D>>& previous, const PeriodicBox<D>& periodic,
+            std::vector<Leak>& leaks) const;
+  // "wall 'tank', face left (-x)".
+  std::string describe(const Leak& l) const;
+
+ private:
+  bool crossed(const WallBox<D>& w, int face, const Vec<D>& from, const Vec<D>& to) const;
+  std::vector<WallBox<D>> walls_;
+};
+
+// "left (-x)", "right (+x)", "bottom (-y)", "top (+y)", "front (-z)", "back (+z)".
+const char* faceLabel(int face);
+
+}  // namespace shizuku

@@ -1,0 +1,160 @@
+// The domain, the wall-leak detector and the in-place removal of particles
+// (docs/boundaries.md, "Domain, outflow and leaks"), in 2D and 3D: the default domain of a
+// wall box is its outer box extended beyond each open face by its size; a controlDict
+// domain is read and checked (min >= max, fluid outside: InputError naming the keyword);
+// no walls: unbounded; a particle inside a wall's layers past d0/2, or through a closed
+// face's layers in one step, is a leak, one through an open face or a periodic wrap is
+// not; removeMarked compacts every present field in order without reallocating.
+#define BOOST_TEST_MODULE boundaries_domain
+#include <boost/test/unit_test.hpp>
+
+#include "boundaries/Domain.hpp"
+#include "boundaries/LeakDetector.hpp"
+#include "core/Dictionary.hpp"
+
+using namespace shizuku;
+
+namespace {
+
+// A tank [0, 1] x [0, 0.5] (x [0, 0.2] in 3D), three layers of d0 = 0.01, open at the top.
+template <int D>
+WallBox<D> tank() {
+  WallBox<D> w;
+  w.name = "tank";
+  w.d0 = 0.01;
+  w.layers = 3;
+  w.min.setZero();
+  w.max.setConstant(0.2);
+  w.max[0] = 1;
+  w.max[1] = 0.5;
+  w.open[3] = true;  // +y
+  w.outerMin = w.min - Vec<D>::Constant(0.03);
+  w.outerMax = w.max + Vec<D>::Constant(0.03);
+  w.outerMax[1] = w.max[1];
+  return w;
+}
+
+template <int D>
+ParticleSet<D> fluidAt(const std::vector<Vec<D>>& x) {
+  ParticleSet<D> p;
+  p.position = x;
+  p.resize(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    p.type[i] = std::uint8_t(ParticleType::fluid);
+    p.id[i] = std::int64_t(10 + i);
+  }
+  return p;
+}
+
+template <int D>
+Vec<D> at(double x, double y) {
+  Vec<D> v = Vec<D>::Constant(0.1);
+  v[0] = x;
+  v[1] = y;
+  return v;
+}
+
+template <int D>
+void checkDefaultDomain() {
+  const Dictionary none = Dictionary::fromString("", "controlDict");
+  const auto p = fluidAt<D>({at<D>(0.5, 0.2)});
+  const Domain<D> d = Domain<D>::read(none, {tank<D>()}, p);
+  BOOST_TEST(d.bounded());
+  // Closed faces: the outer box; open top: 0.5 + its size 0.53.
+  BOOST_TEST(d.min()[0] == -0.03, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(d.max()[0] == 1.03, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(d.min()[1] == -0.03, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(d.max()[1] == 1.03, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(d.contains(at<D>(0.5, 1.0)));     // spray above the open top: in
+  BOOST_TEST(!d.contains(at<D>(1.05, 0.3)));   // fell outside the tank: out
+  BOOST_TEST(d.side(at<D>(1.05, 0.3)) == "right (+x)");
+  BOOST_TEST(!Domain<D>::read(none, {}, p).bounded());  // no walls
+}
+
+template <int D>
+void checkControlDictDomain() {
+  const auto p = fluidAt<D>({at<D>(0.5, 0.2)});
+  const std::string v = D == 2 ? "" : " 0";
+  const Dictionary ok = Dictionary::fromString("domain { min (-1 -1" + v + "); max (2 3" + (D == 2 ? "" : " 1") + "); }", "cd");
+  const Domain<D> d = Domain<D>::read(ok, {tank<D>()}, p);
+  BOOST_TEST(d.max()[1] == 3);
+  auto fails = [&](const std::string& text, const std::string& what) {
+    const Dictionary bad = Dictionary::fromString(text, "cd");
+    try {
+      Domain<D>::read(bad, {}, p);
+      BOOST_ERROR("no InputError for " + text);
+    } catch (const InputError& e) {
+      BOOST_TEST(std::string(e.what()).find(what) != std::string::npos, e.what());
+    }
+  };
+  fails("domain { min (0 1" + v + "); max (1 0" + v + "); }", "keyword 'max': the domain's max must exceed");
+  fails("domain { min (-1 -1" + v + "); max (1 0.1" + (D == 2 ? "" : " 1") + "); }", "does not hold the fluid: particle id 10");
+}
+
+template <int D>
+void checkLeaks() {
+  const LeakDetector<D> det({tank<D>()});
+  const PeriodicBox<D> noPeriodic;
+  // 0: in the water; 1: in the right wall 0.004 past its surface (less than d0/2: no leak);
+  // 2: 0.006 past it (a leak, inside); 3: jumped from inside through the whole right wall;
+  // 4: flew out over the open top and beyond the right wall (no closed face crossed);
+  // 5: inside the bottom layers.
+  const std::vector<Vec<D>> before = {at<D>(0.5, 0.2), at<D>(0.99, 0.2), at<D>(0.99, 0.2), at<D>(0.99, 0.2),
+                                      at<D>(0.99, 0.6), at<D>(0.5, 0.01)};
+  const std::vector<Vec<D>> after = {at<D>(0.51, 0.2), at<D>(1.004, 0.2), at<D>(1.006, 0.2), at<D>(1.05, 0.2),
+                                     at<D>(1.05, 0.55), at<D>(0.5, -0.01)};
+  const auto p = fluidAt<D>(after);
+  std::vector<Leak> leaks;
+  leaks.reserve(8);
+  const auto* data = leaks.data();
+  det.find(p, before, noPeriodic, leaks);
+  BOOST_REQUIRE(leaks.size() == 3u);
+  BOOST_TEST(leaks[0].particle == 2);
+  BOOST_TEST(!leaks[0].crossed);
+  BOOST_TEST(leaks[0].face == 1);
+  BOOST_TEST(leaks[1].particle == 3);
+  BOOST_TEST(leaks[1].crossed);
+  BOOST_TEST(det.describe(leaks[1]) == "wall 'tank', face right (+x)");
+  BOOST_TEST(leaks[2].particle == 5);
+  BOOST_TEST(leaks[2].face == 2);
+  BOOST_TEST(leaks.data() == data);  // no reallocation
+  // A periodic wrap in x across the right wall is no crossing.
+  PeriodicBox<D> px;
+  px.periodic[0] = true;
+  px.lo.setZero();
+  px.hi.setConstant(1.1);
+  det.find(fluidAt<D>({at<D>(0.01, 0.2)}), {at<D>(1.09, 0.2)}, px, leaks);
+  BOOST_TEST(leaks.empty());
+}
+
+template <int D>
+void checkRemoval() {
+  auto p = fluidAt<D>({at<D>(0, 0), at<D>(1, 0), at<D>(2, 0), at<D>(3, 0), at<D>(4, 0)});
+  p.shift.assign(5, Vec<D>::Zero());
+  for (int i = 0; i < 5; ++i) {
+    p.pressure[std::size_t(i)] = i;
+    p.shift[std::size_t(i)][0] = i;
+  }
+  const auto* x = p.position.data();
+  const std::size_t cap = p.position.capacity();
+  BOOST_TEST(p.removeMarked({0, 1, 0, 1, 0}) == 3u);
+  BOOST_TEST(p.position.data() == x);
+  BOOST_TEST(p.position.capacity() == cap);
+  BOOST_TEST(p.id == (std::vector<std::int64_t>{10, 12, 14}));
+  BOOST_TEST(p.pressure == (std::vector<double>{0, 2, 4}));
+  BOOST_TEST(p.shift[2][0] == 4);
+  BOOST_TEST(p.position[1][0] == 2);
+  BOOST_TEST(p.velocity.size() == 3u);
+  BOOST_TEST(p.normal.empty());  // absent fields stay absent
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(defaultDomain2D) { checkDefaultDomain<2>(); }
+BOOST_AUTO_TEST_CASE(defaultDomain3D) { checkDefaultDomain<3>(); }
+BOOST_AUTO_TEST_CASE(controlDictDomain2D) { checkControlDictDomain<2>(); }
+BOOST_AUTO_TEST_CASE(controlDictDomain3D) { checkControlDictDomain<3>(); }
+BOOST_AUTO_TEST_CASE(leaks2D) { checkLeaks<2>(); }
+BOOST_AUTO_TEST_CASE(leaks3D) { checkLeaks<3>(); }
+BOOST_AUTO_TEST_CASE(removal2D) { checkRemoval<2>(); }
+BOOST_AUTO_TEST_CASE(removal3D) { checkRemoval<3>(); }
