@@ -2,7 +2,8 @@
 """Dam break: the experimental surge front in the run's units.
 
 usage: makeAnalytic.py WORKCASE
-  -> WORKCASE/analytic/frontKO.csv, frontMM.csv (columns time, front/extent.dat/max_x)
+  -> WORKCASE/analytic/frontKO.csv, frontMM.csv, frontHistory.csv
+     (columns time, front/extent.dat/max_x)
 
 data/ holds the digitised experiments (copied from the project's reference data; sources
 in tests/cases/README.md): Koshizuka & Oka (1996) and Martin & Moyce (1952, n^2 = 2,
@@ -11,6 +12,8 @@ for a column a wide and 2a high. Converted with this case's a = 0.2 m, g = 9.81 
 The run's fluidExtent gives the largest particle x; a particle stands for a cell of side
 d0, so the front x_front corresponds to max_x = x_front - d0/2 (d0 read from the work case).
 Points beyond Z = 4.6 (the tank is 5a long) are dropped.
+frontHistory.csv is the front x_front(t) of the finest run of the resolution study
+(reference/frontHistory.dat, makeReference.py), likewise minus this run's d0/2.
 """
 import csv
 import math
@@ -42,3 +45,12 @@ for name, data in (("frontKO.csv", ko), ("frontMM.csv", mm)):
         for T, Z in data:
             if Z <= 4.6:
                 f.write(f"{T / scale:.6g},{Z * a - d0 / 2:.6g}\n")
+
+with open(os.path.join(here, "reference", "frontHistory.dat")) as f, \
+        open(os.path.join(case, "analytic", "frontHistory.csv"), "w") as out:
+    out.write("time,front/extent.dat/max_x\n")
+    for line in f:
+        if line.startswith("#") or not line.strip():
+            continue
+        t, x_front = (float(x) for x in line.split()[:2])
+        out.write(f"{t!r},{x_front - d0 / 2!r}\n")

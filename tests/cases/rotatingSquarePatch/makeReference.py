@@ -11,22 +11,19 @@ the true edge: makeAnalytic.py); makeAnalytic.py multiplies it back for the spac
 the run being checked. The file header records the spacing and time step it came from.
 """
 import os
-import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from referenceHistory import read_setting, write_history  # noqa: E402
+
 RHO, OMEGA, L = 1000.0, 1.0, 1.0
-
-
-def read_setting(path, key):
-    with open(path) as f:
-        return float(re.search(rf"(?m)^\s*{key}\s+([^;]+);", f.read()).group(1))
 
 
 def main():
     case = sys.argv[1]
-    d0 = read_setting(os.path.join(case, "system", "particlesDict"), "spacing")
-    dt = read_setting(os.path.join(case, "system", "controlDict"), "deltaT")
+    d0 = read_setting(case, "particlesDict", "spacing")
+    dt = read_setting(case, "controlDict", "deltaT")
     scale = RHO * OMEGA ** 2 * (L - d0) ** 2
     rows = []
     with open(os.path.join(case, "postProcessing", "centre", "0", "p")) as f:
@@ -35,15 +32,11 @@ def main():
                 continue
             t, p = (float(x) for x in line.split()[:2])
             rows.append((t, p / scale))
-    out = os.path.join(HERE, "reference", "centrePressure.dat")
-    os.makedirs(os.path.dirname(out), exist_ok=True)
-    with open(out, "w") as f:
-        f.write(f"# Rotating square patch: centre pressure / (rho omega^2 (L - d0)^2), from a run at\n"
-                f"# L/d0 = {L / d0:g} (d0 = {d0:g} m, dt = {dt:g} s), written by makeReference.py\n"
-                f"# columns: time [s]  p / (rho omega^2 (L - d0)^2) [-]\n")
-        for t, q in rows:
-            f.write(f"{t!r} {q!r}\n")
-    print(f"makeReference: {len(rows)} samples from L/d0 = {L / d0:g} -> {os.path.relpath(out, HERE)}")
+    out = write_history(HERE, "centrePressure.dat", [
+        "Rotating square patch: centre pressure / (rho omega^2 (L - d0)^2), from a run at",
+        f"L/d0 = {L / d0:g} (d0 = {d0:g} m, dt = {dt:g} s), written by makeReference.py",
+        "columns: time [s]  p / (rho omega^2 (L - d0)^2) [-]"], rows)
+    print(f"makeReference: {len(rows)} samples from L/d0 = {L / d0:g} -> {out}")
 
 
 if __name__ == "__main__":
