@@ -4,12 +4,13 @@
 namespace shizuku {
 
 template <int D>
-void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u) {
+void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u, bool outletsOnly) {
   const auto& nl = s.neighbours;
   const long n = long(s.size());
 #pragma omp parallel for schedule(static)
   for (long w = 0; w < n; ++w) {
-    if (s.isFluid(w)) continue;
+    if (s.isFluid(w) || s.particles.isInlet(std::size_t(w))) continue;  // an inlet shows its prescribed velocity
+    if (outletsOnly && !s.particles.isOutlet(std::size_t(w))) continue;
     Vec<D> sum = Vec<D>::Zero();
     double ws = 0;
     for (Index k = nl.begin(w); k < nl.end(w); ++k) {
@@ -39,8 +40,8 @@ AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, std::size_t w) {
   return row;
 }
 
-template void shepardFluidVelocity<2>(const FlowState<2>&, std::vector<Vec<2>>&);
-template void shepardFluidVelocity<3>(const FlowState<3>&, std::vector<Vec<3>>&);
+template void shepardFluidVelocity<2>(const FlowState<2>&, std::vector<Vec<2>>&, bool);
+template void shepardFluidVelocity<3>(const FlowState<3>&, std::vector<Vec<3>>&, bool);
 template struct AdamiRow<2>;
 template struct AdamiRow<3>;
 

@@ -14,8 +14,14 @@ template <int D> using Vec = Eigen::Matrix<double, D, 1>;
 template <int D> using Mat = Eigen::Matrix<double, D, D>;
 using Index = std::int32_t;
 
-// What a particle is.
-enum class ParticleType : std::uint8_t { fluid = 0, wall = 1 };
+// What a particle is: fluid; a wall; a particle of an inlet's buffer (moving at the
+// prescribed velocity, released as fluid when it crosses the inlet's face); a particle of
+// an outlet's buffer (fluid that crossed the outlet's face: prescribed pressure, removed
+// past the buffer's far face). docs/boundaries.md.
+enum class ParticleType : std::uint8_t { fluid = 0, wall = 1, inlet = 2, outlet = 3 };
+inline const char* particleTypeName(std::uint8_t t) {
+  return t == 0 ? "fluid" : t == 1 ? "wall" : t == 2 ? "inlet" : t == 3 ? "outlet" : "?";
+}
 
 // Free-surface class of a fluid particle (docs/method.md 5.2). Wall particles are `interior`.
 enum class SurfaceClass : std::uint8_t { interior = 0, vicinity = 1, free = 2, splash = 3 };

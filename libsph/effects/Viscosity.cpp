@@ -1,6 +1,7 @@
 // The viscous force of the predictor, nu <lap u> (eq. 4, docs/method.md 4.1), built only
 // when nu > 0. Wall neighbours show the no-slip mirror velocity 2 U_w - u_i, or u_i with
-// free slip (docs/method.md 11). Its time-step limit is dt <= 0.125 h^2 / nu
+// free slip (docs/method.md 11); inlet and outlet particles their own velocity (the flow
+// beyond the open end, docs/boundaries.md). Its time-step limit is dt <= 0.125 h^2 / nu
 // (docs/method.md 4.3).
 // Reads (constant/physicalProperties): nu (m^2/s), wallCondition noSlip|slip.
 #include "effects/EffectFactories.hpp"
@@ -19,7 +20,7 @@ class Viscosity final : public ForceEffect<D> {
   TimeStepLimit timeStepLimit(const FlowState<D>& s) const override { return {0.125 * s.h * s.h / nu_, "viscous"}; }
   void addAcceleration(const FlowState<D>& s, std::vector<Vec<D>>& acc) override {
     Ops<D>::addVelocityLaplacian(s.neighbours, s.weights, nu_ * s.V(), s.particles.velocity, s.isFluidMask, walls_,
-                                 acc);
+                                 acc, s.hasOpenBoundaries ? &s.isBufferMask : nullptr);
   }
 
  private:

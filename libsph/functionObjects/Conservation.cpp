@@ -45,7 +45,7 @@ ConservationValues<D> Conservation<D>::compute(const FlowState<D>& s) {
   v.volume = t.volume;
   v.nominalVolume = t.count * m / s.rho0;
   v.fluidMass = t.count * m;
-  v.removedMass = s.removedMass;
+  v.removedMass = s.balance.removedMass;
   v.kineticEnergy = t.kinetic;
   v.momentum = t.momentum;
   if constexpr (D == 2) v.angularMomentum[0] = t.angular[2];

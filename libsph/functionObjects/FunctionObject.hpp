@@ -22,6 +22,9 @@ struct RunInfo {
   double particleSteps = 0;      // fluid particles x steps since the run started
   bool isWriteTime = false;      // the solver writes a time directory at this step
   bool postProcessing = false;   // shizukuPostProcess: sample at every call, whatever writeControl says
+  // Each inlet's and outlet's crossings since the run began; nullptr where unknown
+  // (post-processing) or the case has none.
+  const std::vector<BoundaryCrossings>* crossings = nullptr;
 };
 
 template <int D>

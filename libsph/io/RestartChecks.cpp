@@ -53,6 +53,7 @@ ParticleCounts countParticles(const ParticleSet<D>& p) {
   ParticleCounts c;
   c.fluid = std::int64_t(p.countFluid());
   c.wall = std::int64_t(std::count(p.type.begin(), p.type.end(), std::uint8_t(ParticleType::wall)));
+  c.idLimit = p.nextId;
   for (std::int64_t i : p.id) c.idLimit = std::max(c.idLimit, i + 1);
   return c;
 }
@@ -61,8 +62,9 @@ template <int D>
 void checkParticleValues(const std::string& path, const ParticleSet<D>& p, const ParticleCounts& stated) {
   checkIds(path, p.id, stated.idLimit);
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (p.type[i] != std::uint8_t(ParticleType::fluid) && p.type[i] != std::uint8_t(ParticleType::wall))
-      corruptVtp(path, particle(p.id, i) + ": type " + std::to_string(p.type[i]) + " is neither fluid (0) nor wall (1)");
+    if (p.type[i] > std::uint8_t(ParticleType::outlet))
+      corruptVtp(path, particle(p.id, i) + ": type " + std::to_string(p.type[i]) +
+                           " is none of fluid (0), wall (1), inlet (2), outlet (3)");
     if (p.surface[i] > std::uint8_t(SurfaceClass::splash))
       corruptVtp(path, particle(p.id, i) + ": surface class " + std::to_string(p.surface[i]) + " is not 0..3");
   }

@@ -1,7 +1,7 @@
 // What a restart checks in the values it has read (docs/reliability.md,
 // "Restart files are validated before they are read"; the file's structure is
 // checked before VTK reads it, VtpLayout.hpp):
-//   - each particle: type fluid (0) or wall (1), a known surface class,
+//   - each particle: type fluid (0), wall (1), inlet (2) or outlet (3), a known surface class,
 //     position, U, p, rhoN, normal and shift finite;
 //   - ids unique, >= 0 and below the file's nextId (files without one: below
 //     the particle count, as every id was then 0..n-1); particles may leave

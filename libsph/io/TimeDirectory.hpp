@@ -13,6 +13,7 @@
 // The pvd is rewritten through a temporary file and a rename as well.
 // Dictionary keys read: none (the solver passes writeFormat as `ascii`).
 #pragma once
+#include "core/FluidBalance.hpp"
 #include "particles/ParticleSet.hpp"
 #include <functional>
 #include <string>
@@ -27,8 +28,7 @@ struct TimeState {
   double deltaT = 0;   // s, the next step's dt
   double deltaT0 = 0;  // s, the previous step's dt
   std::string note;    // free text (e.g. "written after a NumericalError")
-  double removedMass = 0;  // kg (kg/m in 2D), fluid removed through the domain's bounds so far
-  long removedCount = 0;   // particles removed so far
+  FluidBalance balance;    // removed, released and captured fluid so far (core/FluidBalance.hpp)
 };
 
 // Throws std::runtime_error naming the path and strerror on any failure; an

@@ -116,6 +116,15 @@ void checkFolderName(const std::string& path, const std::map<std::string, Entry>
     bad(path, it->second.line, "keyword 'name': '" + it->second.text + "' is not the folder's name '" + folderName + "'");
 }
 
+// An optional whole number >= 0 (0 when absent).
+long count(const std::string& path, const std::map<std::string, Entry>& e, const char* key) {
+  if (!e.count(key)) return 0;
+  const double n = number(path, e, key);
+  if (!(n >= 0 && n <= 9e15 && n == std::floor(n)))
+    bad(path, e.at(key).line, std::string("keyword '") + key + "': " + exactNumber(n) + " is not a whole number >= 0");
+  return long(n);
+}
+
 }  // namespace
 
 std::string formatTimeFile(const TimeState& s, const std::string& timeName) {
@@ -130,10 +139,13 @@ std::string formatTimeFile(const TimeState& s, const std::string& timeName) {
   o << "deltaT   " << exactNumber(s.deltaT) << ";   // s, next step\n";
   o << "deltaT0  " << exactNumber(s.deltaT0) << ";   // s, previous step\n";
   if (!s.note.empty()) o << "note     " << quoted(s.note) << ";\n";
-  if (s.removedCount > 0) {
-    o << "removedMass   " << exactNumber(s.removedMass) << ";   // fluid removed through the domain's bounds\n";
-    o << "removedCount  " << s.removedCount << ";\n";
+  const FluidBalance& b = s.balance;
+  if (b.removedCount > 0) {
+    o << "removedMass   " << exactNumber(b.removedMass) << ";   // fluid removed through the domain's bounds\n";
+    o << "removedCount  " << b.removedCount << ";\n";
   }
+  if (b.released > 0) o << "released      " << b.released << ";   // particles released by inlets\n";
+  if (b.captured > 0) o << "captured      " << b.captured << ";   // particles taken by outlets\n";
   return o.str();
 }
 
@@ -163,15 +175,13 @@ TimeState readTimeFile(const std::string& path, const std::string& folderName) {
           std::string("keyword '") + k + "': " + exactNumber(dt) + " is not a positive finite time step");
   }
   if (e.count("note")) s.note = e.at("note").text;
-  if (e.count("removedMass")) s.removedMass = number(path, e, "removedMass");
-  if (!std::isfinite(s.removedMass) || s.removedMass < 0)
-    bad(path, e.at("removedMass").line, "keyword 'removedMass': " + exactNumber(s.removedMass) + " is not a mass >= 0");
-  if (e.count("removedCount")) {
-    const double n = number(path, e, "removedCount");
-    if (!(n >= 0 && n <= 9e15 && n == std::floor(n)))
-      bad(path, e.at("removedCount").line, "keyword 'removedCount': " + exactNumber(n) + " is not a whole number >= 0");
-    s.removedCount = long(n);
-  }
+  FluidBalance& b = s.balance;
+  if (e.count("removedMass")) b.removedMass = number(path, e, "removedMass");
+  if (!std::isfinite(b.removedMass) || b.removedMass < 0)
+    bad(path, e.at("removedMass").line, "keyword 'removedMass': " + exactNumber(b.removedMass) + " is not a mass >= 0");
+  b.removedCount = count(path, e, "removedCount");
+  b.released = count(path, e, "released");
+  b.captured = count(path, e, "captured");
   if (!folderName.empty()) checkFolderName(path, e, s.time, folderName);
   return s;
 }

@@ -8,10 +8,13 @@
 //   note     "...";     // optional free text
 //   removedMass 0.5;    // optional: fluid removed through the domain's bounds so far
 //   removedCount 12;    // optional: particles removed so far
+//   released 400;       // optional: particles inlets released so far
+//   captured 380;       // optional: particles outlets took so far
 // A restart (startFrom latestTime) reads it back and continues exactly.
 // This small reader understands only this flat form (keyword value;) plus
 // comments; unknown keywords are ignored so later versions can add some.
-// Dictionary keys read: value, name, index, deltaT, deltaT0, note, removedMass, removedCount.
+// Dictionary keys read: value, name, index, deltaT, deltaT0, note, removedMass, removedCount,
+// released, captured.
 #pragma once
 #include "io/TimeDirectory.hpp"
 #include <string>

@@ -338,6 +338,7 @@ ParticleSet<D> readVtp(const std::string& path, VtpTime* t) {
   stated.wall = f.integer("wallParticles", 0, kMaxParticleId);
   stated.idLimit = f.integer("nextId", 0, kMaxParticleId).value_or(n);
   checkParticleValues<D>(path, p, stated);
+  p.nextId = stated.idLimit;
   return p;
 }
 

@@ -66,12 +66,15 @@ NumericalScheme<D> CaseSetup<D>::readScheme(const CaseFiles& files, FlowState<D>
 
 template <int D>
 std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunControl& rc, bool postProcessing,
-                                           FlowState<D>& s, std::vector<WallBox<D>>& walls) {
+                                           FlowState<D>& s, std::vector<WallBox<D>>& walls,
+                                           std::vector<OpenBoundaryRegion<D>>& openRegions) {
   // The generator always reads particlesDict (it checks it and gives the periodic box);
   // its particles are used when the start time has none.
   GeneratedParticles<D> gen = generateParticles<D>(files.particlesDict);
   s.periodic = gen.periodic;
   walls = gen.walls;
+  openRegions = gen.openBoundaries;
+  s.hasOpenBoundaries = !openRegions.empty();
   checkPeriodicLength(files.particlesDict, s);
   const auto times = listTimeDirectories(files.dir);
   std::string startName;
@@ -87,8 +90,7 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
     s.time = ts.time;
     s.step = ts.step;
     s.dt = ts.deltaT;
-    s.removedMass = ts.removedMass;
-    s.removedCount = ts.removedCount;
+    s.balance = ts.balance;
   } else {
     s.particles = std::move(gen.set);
     s.particles.rho0 = s.rho0;
@@ -114,8 +116,7 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
   P.density.resize(n);
   P.surface.resize(n);
   P.pressure.resize(n);
-  s.isFluidMask.resize(n);
-  for (std::size_t i = 0; i < n; ++i) s.isFluidMask[i] = P.isFluid(i);
+  s.refreshTypeMasks();
   if (P.countFluid() == 0) files.particlesDict.error("regions", "the case has no fluid particles");
   s.uStar.resize(n);
   s.acceleration.resize(n);

@@ -10,6 +10,7 @@
 #include "core/RunControl.hpp"
 #include "isph/CaseFiles.hpp"
 #include "isph/IsphStep.hpp"
+#include "particles/OpenBoundaryRegion.hpp"
 #include "particles/WallBox.hpp"
 
 namespace shizuku {
@@ -28,10 +29,12 @@ struct CaseSetup {
   // Kernel, d0 and h into the state; the scheme returned.
   static NumericalScheme<D> readScheme(const CaseFiles& files, FlowState<D>& s);
   // The initial particles and time into the state, per-particle arrays sized; returns the
-  // name of the start time; the wall regions into `walls`. postProcessing: only the
-  // particlesDict checks, no start time.
+  // name of the start time; the wall regions into `walls`, the inlets and outlets into
+  // `openRegions` (FlowState::hasOpenBoundaries set when there are any). postProcessing:
+  // only the particlesDict checks, no start time.
   static std::string readInitialState(const CaseFiles& files, const RunControl& rc, bool postProcessing,
-                                      FlowState<D>& s, std::vector<WallBox<D>>& walls);
+                                      FlowState<D>& s, std::vector<WallBox<D>>& walls,
+                                      std::vector<OpenBoundaryRegion<D>>& openRegions);
 };
 
 }  // namespace shizuku

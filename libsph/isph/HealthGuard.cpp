@@ -166,8 +166,7 @@ void HealthGuard<D>::saveGoodState(const FlowState<D>& s) {
   goodP_ = P.pressure;
   goodId_ = P.id;
   goodType_ = P.type;
-  goodRemovedMass_ = s.removedMass;
-  goodRemovedCount_ = s.removedCount;
+  goodBalance_ = s.balance;
   goodTime_ = s.time;
   goodStep_ = s.step;
   goodDt_ = s.dt;
@@ -182,10 +181,8 @@ void HealthGuard<D>::restoreGoodState(FlowState<D>& s) const {
   P.pressure = goodP_;
   P.id = goodId_;
   P.type = goodType_;
-  s.isFluidMask.resize(P.size());
-  for (std::size_t i = 0; i < P.size(); ++i) s.isFluidMask[i] = P.isFluid(i);
-  s.removedMass = goodRemovedMass_;
-  s.removedCount = goodRemovedCount_;
+  s.refreshTypeMasks();
+  s.balance = goodBalance_;
   s.time = goodTime_;
   s.step = goodStep_;
   s.dt = goodDt_;

@@ -60,8 +60,8 @@ class HealthGuard {
   std::vector<double> goodP_;
   std::vector<std::int64_t> goodId_;
   std::vector<std::uint8_t> goodType_;
-  double goodTime_ = 0, goodDt_ = 0, goodRemovedMass_ = 0;
-  long goodRemovedCount_ = 0;
+  double goodTime_ = 0, goodDt_ = 0;
+  FluidBalance goodBalance_;
   long goodStep_ = 0;
 };
 

@@ -113,6 +113,8 @@ void IsphStep<D>::correct() {
     if (s_.isFluid(i)) P.velocity[i] = s_.uStar[i];
   // u + (-c) <grad p> is u - c <grad p> to the last bit (negation is exact).
   Ops<D>::addGradient(s_.neighbours, s_.weights, -(s_.dt / s_.rho0 * s_.V()), P.pressure, P.velocity, s_.isFluidMask);
+  // Outlet particles carry the fluid's velocity on (zero normal gradient, docs/boundaries.md).
+  if (s_.hasOpenBoundaries) shepardFluidVelocity(s_, P.velocity, true);
 }
 
 template <int D>
@@ -184,14 +186,13 @@ void IsphStep<D>::reorderParticles() {
   };
   apply(P.position);
   P.forEachField([&](const char*, auto& v) { apply(v); });
-  for (std::size_t i = 0; i < P.size(); ++i) s_.isFluidMask[i] = P.isFluid(i);
+  s_.refreshTypeMasks();
 }
 
 template <int D>
 void IsphStep<D>::particleCountChanged() {
   const std::size_t n = s_.size();
-  s_.isFluidMask.resize(n);
-  for (std::size_t i = 0; i < n; ++i) s_.isFluidMask[i] = s_.particles.isFluid(i);
+  s_.refreshTypeMasks();
   s_.uStar.resize(n);
   s_.acceleration.resize(n);
   if (needs_.surfaceFit) {

@@ -17,27 +17,41 @@ std::string listed(const std::vector<Item>& list, Text text) {
 }  // namespace
 
 template <int D>
-Outflow<D>::Outflow(Domain<D> domain, std::vector<WallBox<D>> walls)
-    : domain_(std::move(domain)), leaks_(std::move(walls)) {}
+Outflow<D>::Outflow(Domain<D> domain, std::vector<WallBox<D>> walls, std::unique_ptr<OpenBoundaries<D>> open)
+    : domain_(std::move(domain)), leaks_(std::move(walls)), open_(std::move(open)) {}
+
+template <int D>
+Outflow<D>::~Outflow() = default;
 
 template <int D>
 void Outflow<D>::start(const FlowState<D>& s, const std::string& caseDir, const std::string& startTimeName) {
   caseDir_ = caseDir;
   startTimeName_ = startTimeName;
-  initialMass_ = double(s.particles.countFluid()) * s.particles.mass + s.removedMass;
+  const FluidBalance& b = s.balance;
+  initialMass_ = double(long(s.particles.countFluid()) - b.released + b.captured) * s.particles.mass + b.removedMass;
 }
 
 template <int D>
-std::string Outflow<D>::describe(const HealthLimits& limits) const {
-  return cat("domain: ", domain_.describe(), domain_.bounded() ? cat("; fluid leaving it is removed (healthChecks/"
+std::vector<std::string> Outflow<D>::describe(const HealthLimits& limits) const {
+  std::vector<std::string> v;
+  v.push_back(cat("domain: ", domain_.describe(), domain_.bounded() ? cat("; fluid leaving it is removed (healthChecks/"
              "maxLostFraction ", limits.maxLostFraction, ")") : "",
              leaks_.active() ? cat("; leak check on ", leaks_.walls().size(), " wall(s) (healthChecks/maxLeaks ",
-                                   limits.maxLeaks, ")") : "");
+                                   limits.maxLeaks, ")") : ""));
+  if (open_)
+    for (const auto& l : open_->describe()) v.push_back(l);
+  return v;
 }
 
 template <int D>
 bool Outflow<D>::afterStep(FlowState<D>& s, const std::vector<Vec<D>>& previous, HealthGuard<D>& guard) {
   if (leaks_.active()) checkLeaks(s, previous, guard);
+  const bool removed = removeOutside(s, guard);
+  return (open_ && open_->afterStep(s)) || removed;
+}
+
+template <int D>
+bool Outflow<D>::removeOutside(FlowState<D>& s, HealthGuard<D>& guard) {
   if (!domain_.bounded()) return false;
   auto& P = s.particles;
   outside_.clear();
@@ -46,8 +60,8 @@ bool Outflow<D>::afterStep(FlowState<D>& s, const std::vector<Vec<D>>& previous,
   if (outside_.empty()) return false;
   const double mass = double(outside_.size()) * P.mass;
   const double limit = guard.limits().maxLostFraction * initialMass_;
-  if (s.removedMass + mass > limit)
-    guard.failWith(s, cat("fluid removed through the domain's bounds would reach ", s.removedMass + mass,
+  if (s.balance.removedMass + mass > limit)
+    guard.failWith(s, cat("fluid removed through the domain's bounds would reach ", s.balance.removedMass + mass,
                           " kg, more than healthChecks/maxLostFraction ", guard.limits().maxLostFraction,
                           " of the initial fluid mass ", initialMass_, " kg, at step ", s.step, ", time ", s.time,
                           "; leaving now: ", listed<D>(outside_, [&](Index i) {
@@ -59,8 +73,8 @@ bool Outflow<D>::afterStep(FlowState<D>& s, const std::vector<Vec<D>>& previous,
   remove_.assign(P.size(), 0);
   for (Index i : outside_) remove_[std::size_t(i)] = 1;
   P.removeMarked(remove_);
-  s.removedMass += mass;
-  s.removedCount += long(outside_.size());
+  s.balance.removedMass += mass;
+  s.balance.removedCount += long(outside_.size());
   return true;
 }
 

@@ -1,4 +1,5 @@
-// What leaves the fluid after each step (docs/boundaries.md, "Domain, outflow and leaks"):
+// What crosses the fluid's bounds after each step (docs/boundaries.md, "Domain, outflow and
+// leaks", "Inlets and outlets"):
 //   - wall leaks (boundaries/LeakDetector): counted, logged to
 //     postProcessing/leaks/<startTime>/leaks.dat (time, id, position, velocity, wall, face,
 //     how), and more than healthChecks/maxLeaks stops the run (exit 2) with the leaking
@@ -9,12 +10,15 @@
 //     reports it), the particle arrays compacted in place (ids unchanged, never reused).
 //     When the removed mass would pass healthChecks/maxLostFraction of the initial fluid
 //     mass, the run stops instead (exit 2, last good state), naming the particles.
+//   - inlets and outlets (boundaries/OpenBoundaries, when the case has any): buffers moved,
+//     fluid released and captured; the initial fluid mass of the balance counts them.
 // Files are opened at the first event, so a run where nothing leaves or leaks writes none.
 // O(N) per step; no allocation once the buffers have their capacity.
 // Reads no dictionary keys (the limits come from HealthGuard, the domain from Domain).
 #pragma once
 #include "boundaries/Domain.hpp"
 #include "boundaries/LeakDetector.hpp"
+#include "boundaries/OpenBoundaries.hpp"
 #include "io/PostProcessingFile.hpp"
 #include "isph/HealthGuard.hpp"
 #include <optional>
@@ -24,22 +28,28 @@ namespace shizuku {
 template <int D>
 class Outflow {
  public:
-  Outflow(Domain<D> domain, std::vector<WallBox<D>> walls);
+  // open: the inlets and outlets (nullptr: none).
+  Outflow(Domain<D> domain, std::vector<WallBox<D>> walls, std::unique_ptr<OpenBoundaries<D>> open = nullptr);
+  ~Outflow();
   // The initial fluid mass (the current one plus what left before a restart).
   void start(const FlowState<D>& s, const std::string& caseDir, const std::string& startTimeName);
   // After a step: leaks, then removal. `previous`: the positions at the start of the step.
-  // Returns whether particles were removed (the caller resizes the step's arrays).
+  // Returns whether particles were removed or added, or changed type (the caller
+  // refreshes the step's arrays).
   bool afterStep(FlowState<D>& s, const std::vector<Vec<D>>& previous, HealthGuard<D>& guard);
   long leakCount() const { return leakCount_; }
   const Domain<D>& domain() const { return domain_; }
-  // For -dryRun and the log.
-  std::string describe(const HealthLimits& limits) const;
+  const OpenBoundaries<D>* openBoundaries() const { return open_.get(); }
+  // For -dryRun and the log: the domain line, then a line per inlet and outlet.
+  std::vector<std::string> describe(const HealthLimits& limits) const;
 
  private:
+  bool removeOutside(FlowState<D>& s, HealthGuard<D>& guard);
   void checkLeaks(const FlowState<D>& s, const std::vector<Vec<D>>& previous, HealthGuard<D>& guard);
   void logRemoved(const FlowState<D>& s);
   Domain<D> domain_;
   LeakDetector<D> leaks_;
+  std::unique_ptr<OpenBoundaries<D>> open_;
   std::string caseDir_, startTimeName_;
   double initialMass_ = 0;
   long leakCount_ = 0;

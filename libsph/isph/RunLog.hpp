@@ -21,9 +21,10 @@ struct ProgressInfo {
   long removed = 0;            // fluid particles removed through the domain's bounds so far
   double removedFraction = 0;  // their mass over the initial fluid mass
   long leaks = 0;              // wall leaks found so far
+  long released = 0, captured = 0;  // particles inlets released and outlets captured so far
 };
 
-// "step N  t = ..  dt = .. (limiter)  PPE .. it, res ..  max|U| = ..  rhoErr rms = .. %  ADS ..  removed N (f %)  leaks N  x% done, ETA .."
+// "step N  t = ..  dt = .. (limiter)  PPE .. it, res ..  max|U| = ..  rhoErr rms = .. %  ADS ..  in N out N  removed N (f %)  leaks N  x% done, ETA .."
 std::string progressLine(const ProgressInfo& p, const StepReport& r);
 
 struct RunSummary {

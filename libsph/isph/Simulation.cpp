@@ -4,6 +4,7 @@
 #include "isph/TimeLoop.hpp"
 #include "io/TimeDirectory.hpp"
 #include "io/TimeName.hpp"
+#include <algorithm>
 #include <omp.h>
 #include <sstream>
 
@@ -18,9 +19,16 @@ Simulation<D>::Simulation(const std::string& caseDir, const SimulationOptions& o
   NumericalScheme<D> scheme = CaseSetup<D>::readScheme(files_, s_);
   guard_ = std::make_unique<HealthGuard<D>>(files_.controlDict);
   std::vector<WallBox<D>> walls;
-  startTimeName_ = CaseSetup<D>::readInitialState(files_, rc_, opt_.postProcessing, s_, walls);
+  std::vector<OpenBoundaryRegion<D>> openRegions;
+  startTimeName_ = CaseSetup<D>::readInitialState(files_, rc_, opt_.postProcessing, s_, walls, openRegions);
   guard_->setLimits(s_, physics.g);
-  outflow_ = std::make_unique<Outflow<D>>(Domain<D>::read(files_.controlDict, walls, s_.particles), walls);
+  Domain<D> domain = Domain<D>::read(files_.controlDict, walls, s_.particles);
+  std::unique_ptr<OpenBoundaries<D>> open;
+  if (!openRegions.empty()) {
+    open = std::make_unique<OpenBoundaries<D>>(std::move(openRegions), s_, domain);
+    open->prescribe(s_);
+  }
+  outflow_ = std::make_unique<Outflow<D>>(std::move(domain), walls, std::move(open));
   EffectSet<D> effects = EffectSet<D>::build(files_.gravity ? &*files_.gravity : nullptr, files_.physicalProperties,
                                              physics.nu, files_.sphSchemes, s_);
   step_ = std::make_unique<IsphStep<D>>(s_, std::move(scheme), std::move(effects), timers_);
@@ -37,13 +45,18 @@ Simulation<D>::~Simulation() = default;
 template <int D>
 std::string Simulation<D>::pipeline() const {
   std::ostringstream os;
-  os << "Pipeline (" << D << "D, " << s_.particles.countFluid() << " fluid + "
-     << s_.size() - s_.particles.countFluid() << " wall particles, d0 = " << s_.d0 << " m, h = " << s_.h
+  const auto& T = s_.particles.type;
+  const auto count = [&](ParticleType t) { return std::count(T.begin(), T.end(), std::uint8_t(t)); };
+  os << "Pipeline (" << D << "D, " << count(ParticleType::fluid) << " fluid + " << count(ParticleType::wall)
+     << " wall particles"
+     << (s_.hasOpenBoundaries ? cat(" + ", count(ParticleType::inlet), " inlet + ", count(ParticleType::outlet), " outlet")
+                              : std::string())
+     << ", d0 = " << s_.d0 << " m, h = " << s_.h
      << " m, rho = " << s_.rho0 << " kg/m^3)\n";
   int k = 1;
   auto line = [&](const std::string& what) { os << "  " << k++ << ". " << what << "\n"; };
   for (const auto& l : step_->describe()) line(l);
-  line(outflow_->describe(guard_->limits()));
+  for (const auto& l : outflow_->describe(guard_->limits())) line(l);
   for (const auto& f : functionObjects_) line(cat("function object ", f->name(), ": ", f->type(), " (", f->describe(), ")"));
   line(cat("time: ", rc_.adjustTimeStep ? cat("adjustable dt, maxCo ", rc_.maxCo) : cat("fixed dt ", rc_.deltaT, " s"),
            ", end ", rc_.endTime, " s"));
@@ -75,11 +88,9 @@ void Simulation<D>::loadTime(const std::string& name) {
   s_.time = ts.time;
   s_.step = ts.step;
   s_.dt = ts.deltaT;
-  s_.removedMass = ts.removedMass;
-  s_.removedCount = ts.removedCount;
+  s_.balance = ts.balance;
   const std::size_t n = s_.particles.size();
-  s_.isFluidMask.resize(n);
-  for (std::size_t i = 0; i < n; ++i) s_.isFluidMask[i] = s_.particles.isFluid(i);
+  s_.refreshTypeMasks();
   s_.particles.surface.resize(n);
   s_.particles.density.resize(n);
   analyse();

@@ -75,8 +75,7 @@ void TimeLoop<D>::writeTime(const std::string& reason) {
   ts.deltaT = s_.dt;
   ts.deltaT0 = s_.dt;
   ts.note = reason;
-  ts.removedMass = s_.removedMass;
-  ts.removedCount = s_.removedCount;
+  ts.balance = s_.balance;
   const std::string name = timeName(s_.time);
   writeTimeDirectory<D>(files_.dir, name, s_.particles, ts, rc_.ascii);
   written_.push_back(name);
@@ -94,6 +93,7 @@ void TimeLoop<D>::runFunctionObjects(bool isWriteTime, double wall, double parti
   info.wallSeconds = wall;
   info.particleSteps = particleSteps;
   info.isWriteTime = isWriteTime;
+  if (const auto* open = outflow_.openBoundaries()) info.crossings = &open->crossings();
   for (auto& f : functionObjects_) f->execute(s_, info);
 }
 
@@ -152,9 +152,11 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
     p.densityErrorRms = guard_.densityError().interior.count > 0 ? guard_.densityError().interior.rms : 0.0;
     p.fractionDone = (s_.time - startTime_) / span_;
     p.wallSeconds = clockSeconds() - wallStart;
-    p.removed = s_.removedCount;
-    p.removedFraction = s_.removedMass / std::max(s_.removedMass + fluidCount_ * s_.particles.mass, 1e-300);
+    p.removed = s_.balance.removedCount;
+    p.removedFraction = s_.balance.removedMass / std::max(s_.balance.removedMass + fluidCount_ * s_.particles.mass, 1e-300);
     p.leaks = outflow_.leakCount();
+    p.released = s_.balance.released;
+    p.captured = s_.balance.captured;
     info(progressLine(p, step_.report()));
   }
   return stopNow;

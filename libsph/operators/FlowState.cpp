@@ -19,6 +19,17 @@ void FlowState<D>::refreshPairGeometry() {
 }
 
 template <int D>
+void FlowState<D>::refreshTypeMasks() {
+  const auto& P = particles;
+  const std::size_t n = P.size();
+  isFluidMask.resize(n);
+  for (std::size_t i = 0; i < n; ++i) isFluidMask[i] = P.isFluid(i);
+  if (!hasOpenBoundaries) return;
+  isBufferMask.resize(n);
+  for (std::size_t i = 0; i < n; ++i) isBufferMask[i] = P.isInlet(i) || P.isOutlet(i);
+}
+
+template <int D>
 void FlowState<D>::computeDensity() {
   auto& rho = particles.density;
   const auto& nl = neighbours;

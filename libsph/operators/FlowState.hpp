@@ -3,6 +3,7 @@
 // physical constants and the per-step derived fields. Effects receive it;
 // arrays that only an effect needs belong to that effect, not here.
 #pragma once
+#include "core/FluidBalance.hpp"
 #include "core/types.hpp"
 #include "kernels/Kernel.hpp"
 #include "operators/Ops.hpp"
@@ -19,6 +20,10 @@ struct FlowState {
   NeighbourList<D> neighbours;           // CSR, built once per step at r^n
   PairWeights<D> weights;                // W, corrected gradient, Laplacian weights
   std::vector<std::uint8_t> isFluidMask; // 1 for fluid particles (weights are computed for them)
+  // 1 for inlet and outlet particles, whose velocity neighbours see as it is (no wall
+  // mirror); empty in a case without inlets and outlets.
+  std::vector<std::uint8_t> isBufferMask;
+  bool hasOpenBoundaries = false;        // the case has inlets or outlets
 
   // constants (the effects keep their own: g in gravity, nu in viscosity)
   double d0 = 0, h = 0, rho0 = 1000;
@@ -26,10 +31,9 @@ struct FlowState {
   // time
   double time = 0, dt = 0;
   long step = 0;
-  // fluid that left the domain since the start from particlesDict (kept across restarts
-  // in uniform/time), for the mass balance and healthChecks/maxLostFraction
-  double removedMass = 0;
-  long removedCount = 0;
+  // fluid removed, released and captured since the start from particlesDict (kept across
+  // restarts in uniform/time): the mass balance and healthChecks/maxLostFraction
+  FluidBalance balance;
 
   // per-step derived fields (sized once, reused every step)
   std::vector<double> divR;              // -sum V r_ij . gradW_ij (free-surface indicator, docs/method.md 5.1)
@@ -46,6 +50,9 @@ struct FlowState {
   double V() const { return particles.volume(); }
   std::size_t size() const { return particles.size(); }
   bool isFluid(std::size_t i) const { return isFluidMask[i] != 0; }
+  // isFluidMask (and isBufferMask with open boundaries) from the particle types, sized to
+  // the particle count: after the types, the count or the order changed.
+  void refreshTypeMasks();
   SurfaceClass surfaceClass(std::size_t i) const { return particles.surfaceClass(i); }
 
   // Recompute r_ij, |r_ij| and W_ij on the current pair list after positions moved.

@@ -42,11 +42,12 @@ void Ops<D>::laplacian(const NeighbourList<D>& nl, const PairWeights<D>& pw, dou
 template <int D>
 void Ops<D>::addVelocityLaplacian(const NeighbourList<D>& nl, const PairWeights<D>& pw, double scale,
                                   const std::vector<Vec<D>>& u, const RowMask& isFluid, WallVelocity walls,
-                                  std::vector<Vec<D>>& out) {
+                                  std::vector<Vec<D>>& out, const RowMask* isBuffer) {
   const bool noSlip = walls == WallVelocity::noSlip;
   sumOverNeighbours(nl, &isFluid, scale, true, out, [&](long i, Index k) -> Vec<D> {
     const Index j = nl.j[k];
-    const Vec<D> uj = isFluid[j] ? u[j] : noSlip ? Vec<D>(2.0 * u[j] - u[i]) : u[i];
+    const bool asIs = isFluid[j] || (isBuffer && (*isBuffer)[j]);
+    const Vec<D> uj = asIs ? u[j] : noSlip ? Vec<D>(2.0 * u[j] - u[i]) : u[i];
     return pw.lapW[k] * (uj - u[i]);
   });
 }

@@ -61,10 +61,11 @@ struct Ops {
                         const std::vector<double>& f, std::vector<double>& out, const RowMask* rows = nullptr);
   static void laplacian(const NeighbourList<D>& nl, const PairWeights<D>& pw, double scale,
                         const std::vector<Vec<D>>& u, std::vector<Vec<D>>& out, const RowMask* rows = nullptr);
-  // out[i] += scale <lap u>_i on fluid rows (isFluid), wall neighbours as `walls` says.
+  // out[i] += scale <lap u>_i on fluid rows (isFluid), wall neighbours as `walls` says;
+  // inlet and outlet neighbours (isBuffer, when given) with their own velocity.
   static void addVelocityLaplacian(const NeighbourList<D>& nl, const PairWeights<D>& pw, double scale,
                                    const std::vector<Vec<D>>& u, const RowMask& isFluid, WallVelocity walls,
-                                   std::vector<Vec<D>>& out);
+                                   std::vector<Vec<D>>& out, const RowMask* isBuffer = nullptr);
   static void velocityGradient(const NeighbourList<D>& nl, const PairWeights<D>& pw, double scale,
                                const std::vector<Vec<D>>& u, std::vector<Mat<D>>& out);  // out(a,b) = d u_a / d x_b
   // Full Hessian of f at particle i by the FI system (SPH2 only; on demand, not per step).

@@ -7,10 +7,12 @@
 // ParticleGenerator.hpp.
 #include "particles/ParticleGenerator.hpp"
 #include "particles/MemoryCheck.hpp"
+#include "particles/OpenBoundaryRegion.hpp"
+#include "particles/PointGrid.hpp"
+#include "particles/VelocityExpression.hpp"
 #include "particles/WallLattice.hpp"
 #include "core/Log.hpp"
 #include "core/Parameter.hpp"
-#include <muParser.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -43,7 +45,8 @@ const IntParameter dimensionKey = particles.integer("dimension", "2 or 3; select
     .def(2).min(2).max(3);
 
 const ParameterGroup region("system/particlesDict: regions/<name>", "One fluid or wall region (in file order).");
-const OptionParameter regionType = region.option("type", {"fluid", "wall"}, "fluid particles, or wall layers").required();
+const OptionParameter regionType = region.option("type", {"fluid", "wall", "inlet", "outlet"},
+    "fluid particles, wall layers, or an inlet's or outlet's buffer (docs/boundaries.md)").required();
 const OptionParameter shape = region.option("shape", {"box", "circle", "sphere"},
     "box (fluid and wall), circle or sphere (fluid)").required();
 const VectorParameter boxMin = region.vector("min", dim::length, "box: lower corner (wall: inner surface)").required();
@@ -74,63 +77,6 @@ std::vector<std::string> faceNames(int D) {
   f.resize(2 * D);
   return f;
 }
-
-// Calls f(i) for every integer index i with lo <= i < hi, x fastest.
-template <int D, class F>
-void forEachIndex(const std::array<long, D>& lo, const std::array<long, D>& hi, F&& f) {
-  for (int k = 0; k < D; ++k)
-    if (hi[k] <= lo[k]) return;
-  std::array<long, D> i = lo;
-  for (;;) {
-    f(i);
-    int k = 0;
-    for (; k < D; ++k) {
-      if (++i[k] < hi[k]) break;
-      i[k] = lo[k];
-    }
-    if (k == D) return;
-  }
-}
-
-// Points hashed into cubic cells of size h: "is any point closer than r <= h?"
-template <int D>
-class PointGrid {
- public:
-  PointGrid(double h, const std::vector<Vec<D>>& points) : h_(h), points_(points) {}
-  void insert(Index i) { cells_[cellOf(points_[i])].push_back(i); }
-  bool anyCloserThan(const Vec<D>& x, double r) const {
-    const Cell c = cellOf(x);
-    std::array<long, D> lo, hi;
-    for (int k = 0; k < D; ++k) { lo[k] = c[k] - 1; hi[k] = c[k] + 2; }
-    bool hit = false;
-    forEachIndex<D>(lo, hi, [&](const Cell& n) {
-      if (hit) return;
-      auto it = cells_.find(n);
-      if (it == cells_.end()) return;
-      for (Index j : it->second)
-        if ((points_[j] - x).squaredNorm() < r * r) { hit = true; return; }
-    });
-    return hit;
-  }
-
- private:
-  using Cell = std::array<long, D>;
-  struct Hash {
-    std::size_t operator()(const Cell& c) const {
-      std::size_t h = 0;
-      for (int k = 0; k < D; ++k) h = h * 1000003u ^ std::hash<long>()(c[k]);
-      return h;
-    }
-  };
-  Cell cellOf(const Vec<D>& x) const {
-    Cell c;
-    for (int k = 0; k < D; ++k) c[k] = long(std::floor(x[k] / h_));
-    return c;
-  }
-  double h_;
-  const std::vector<Vec<D>>& points_;
-  std::unordered_map<Cell, std::vector<Index>, Hash> cells_;
-};
 
 template <int D>
 struct Region {
@@ -335,36 +281,6 @@ bool overlap(const Region<D>& a, const Region<D>& b, double tol) {
   return (nearest - c.centre).norm() < c.radius - tol;
 }
 
-// muParser expressions of x y z with the constant pi, one per component.
-template <int D>
-struct Expressions {
-  double xyz[3] = {0, 0, 0};
-  std::array<mu::Parser, D> parser;
-  explicit Expressions(const std::vector<std::string>& text) {
-    for (int k = 0; k < D; ++k) {
-      parser[k].DefineVar("x", &xyz[0]);
-      parser[k].DefineVar("y", &xyz[1]);
-      parser[k].DefineVar("z", &xyz[2]);
-      parser[k].DefineConst("pi", M_PI);
-      parser[k].SetExpr(text[k]);
-    }
-  }
-  Vec<D> operator()(const Vec<D>& x) {
-    for (int k = 0; k < D; ++k) xyz[k] = x[k];
-    Vec<D> u;
-    for (int k = 0; k < D; ++k) u[k] = parser[k].Eval();
-    return u;
-  }
-};
-
-// "muParser: <message> in expression "<text>"", without muParser's trailing '.' and ' '.
-std::string muMessage(const mu::Parser::exception_type& err) {
-  std::string m = err.GetMsg(), e = err.GetExpr();
-  while (!m.empty() && (m.back() == '.' || m.back() == ' ')) m.pop_back();
-  while (!e.empty() && e.back() == ' ') e.pop_back();
-  return "muParser: " + m + " in expression \"" + e + "\"";
-}
-
 template <int D>
 void expressionVelocity(const Dictionary& v, const std::vector<Vec<D>>& x, std::vector<Vec<D>>& u) {
   const std::vector<std::string> text = v.getWordList("value");
@@ -372,25 +288,25 @@ void expressionVelocity(const Dictionary& v, const std::vector<Vec<D>>& x, std::
     v.error("value", "expected " + std::to_string(D) + " expressions, one per velocity component, found " +
                          std::to_string(text.size()));
   try {  // syntax errors first, once, even for an empty region
-    Expressions<D> e(text);
+    VelocityExpression<D> e(text);
     e(Vec<D>::Zero());
-  } catch (const mu::Parser::exception_type& err) {
-    v.error("value", muMessage(err));
+  } catch (const VelocityExpressionError& err) {
+    v.error("value", err.what());
   }
   // Evaluation errors: the one at the lowest particle index is reported.
   std::size_t firstBad = x.size();
   std::string failure;
 #pragma omp parallel
   {
-    Expressions<D> e(text);
+    VelocityExpression<D> e(text);
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < x.size(); ++i) {
       std::string m;
       try {
         u[i] = e(x[i]);
         if (!u[i].allFinite()) m = "the expressions give " + fmt<D>(u[i]) + " at " + fmt<D>(x[i]);
-      } catch (const mu::Parser::exception_type& err) {
-        m = muMessage(err);
+      } catch (const VelocityExpressionError& err) {
+        m = err.what();
       }
       if (!m.empty()) {
 #pragma omp critical(shizuku_expression_failure)
@@ -607,6 +523,44 @@ void removeFluidInWalls(const Dictionary& regionsDict, Region<D>& f, const std::
   f.points = std::move(kept);
 }
 
+// The inlet and outlet regions named in `names`, read once the fluid and walls are known
+// (their direction is checked against the walls' centre, or the fluid's without walls).
+template <int D>
+std::vector<OpenBoundaryRegion<D>> readOpenBoundaries(const Dictionary& regionsDict, const std::vector<std::string>& names,
+                                                      const std::vector<Region<D>>& fluids,
+                                                      const std::vector<Region<D>>& walls, double d0) {
+  Vec<D> lo = Vec<D>::Constant(INFINITY), hi = Vec<D>::Constant(-INFINITY);
+  for (const auto& w : walls.empty() ? fluids : walls) {
+    const Vec<D> a = w.circle ? Vec<D>(w.centre.array() - w.radius) : w.min;
+    const Vec<D> b = w.circle ? Vec<D>(w.centre.array() + w.radius) : w.max;
+    lo = lo.cwiseMin(a);
+    hi = hi.cwiseMax(b);
+  }
+  std::vector<OpenBoundaryRegion<D>> out;
+  for (const auto& name : names) {
+    const Dictionary& r = regionsDict.subDict(name);
+    const bool inlet = regionType.read(r) == "inlet";
+    if (shape.read(r) != "box")
+      r.error("shape", std::string("an ") + (inlet ? "inlet" : "outlet") + " is a box; circle and sphere are for fluid regions");
+    Region<D> box;
+    readBox<D>(r, box, d0);
+    out.push_back(readOpenBoundaryRegion<D>(r, name, inlet, box.min, box.max, d0, Vec<D>(0.5 * (lo + hi))));
+  }
+  return out;
+}
+
+// No initial fluid particle may lie inside an inlet's or outlet's box.
+template <int D>
+void checkNoFluidInside(const OpenBoundaryRegion<D>& b, const std::vector<Vec<D>>& fluid, double tol) {
+  for (const auto& x : fluid) {
+    bool inside = true;
+    for (int k = 0; k < D; ++k) inside &= x[k] > b.min[k] + tol && x[k] < b.max[k] - tol;
+    if (inside)
+      b.dict->error("min", std::string(b.inlet ? "inlet" : "outlet") + " '" + b.name + "' overlaps the fluid: the fluid particle at " +
+                               fmt<D>(x) + " lies inside its box; the buffer must lie beside the fluid, its face against it");
+  }
+}
+
 double readSpacing(const Dictionary& particlesDict) { return spacing.read(particlesDict); }
 
 template <int D>
@@ -627,12 +581,16 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
   // 1. Read every region, in file order.
   const Dictionary& regionsDict = dict.subDict("regions");
   std::vector<Region<D>> fluids, walls;
+  std::vector<std::string> openNames;
   for (const auto& name : regionsDict.keys()) {
     const Dictionary& r = regionsDict.subDict(name);
-    if (regionType.read(r) == "fluid")
+    const std::string type = regionType.read(r);
+    if (type == "fluid")
       fluids.push_back(readFluid<D>(r, name, d0, regionsDict, limit));
-    else
+    else if (type == "wall")
       walls.push_back(readWall<D>(r, name, d0, regionsDict, limit));
+    else
+      openNames.push_back(name);
   }
   if (fluids.empty()) regionsDict.error("regions", "no fluid region (a region with 'type fluid;') is defined");
   checkTotalCount<D>(regionsDict, fluids, walls, d0, limit);
@@ -642,6 +600,8 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
         regionsDict.error(fluids[b].name, "fluid region '" + fluids[b].name + "' overlaps fluid region '" +
                                               fluids[a].name + "' (" + regionsDict.location(fluids[a].name).str() +
                                               ")");
+
+  out.openBoundaries = readOpenBoundaries<D>(regionsDict, openNames, fluids, walls, d0);
 
   // 2. Wall particles; a particle closer than d0/2 to an earlier one is dropped.
   std::vector<Vec<D>> wallPoints;
@@ -668,13 +628,25 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
     fluidPoints.insert(fluidPoints.end(), f.points.begin(), f.points.end());
     fluidVelocity.insert(fluidVelocity.end(), u.begin(), u.end());
   }
+  std::vector<Vec<D>> openPoints, openVelocity;
+  std::vector<std::uint8_t> openType;
+  for (const auto& b : out.openBoundaries) {
+    checkNoFluidInside<D>(b, fluidPoints, tol);
+    const std::size_t before = openPoints.size();
+    fillOpenBoundaryRegion<D>(b, d0, fluidPoints, fluidVelocity,
+                              [&](const Vec<D>& x) { return wallGrid.anyCloserThan(x, 0.5 * d0); }, openPoints,
+                              openVelocity);
+    openType.resize(openPoints.size(), std::uint8_t(b.inlet ? ParticleType::inlet : ParticleType::outlet));
+    if (b.inlet && openPoints.size() == before)
+      regionsDict.error(b.name, "inlet '" + b.name + "' holds no particle: its box lies within the walls' layers");
+  }
   dict.checkAllRead();
   for (const auto& w : walls) out.walls.push_back({w.name, w.min, w.max, w.outerMin, w.outerMax, w.open, w.layers, d0});
 
-  // 4. The particle set: fluid first, then walls. (A disc's count was
-  // estimated from its area; the exact count is checked here.)
+  // 4. The particle set: fluid first, then walls, then inlet and outlet buffers. (A
+  // disc's count was estimated from its area; the exact count is checked here.)
   ParticleSet<D>& set = out.set;
-  const std::size_t nf = fluidPoints.size(), nw = wallPoints.size(), n = nf + nw;
+  const std::size_t nf = fluidPoints.size(), nw = wallPoints.size(), n = nf + nw + openPoints.size();
   if (double(n) > limit)
     regionsDict.error("regions", "the regions hold " + std::to_string(n) + " particles, more than maxParticles " +
                                      countText(limit) + ": use a larger spacing, or raise maxParticles in particlesDict");
@@ -682,15 +654,17 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
   set.spacing = d0;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < long(n); ++i) {
-    const bool fluid = std::size_t(i) < nf;
-    set.position[i] = fluid ? fluidPoints[i] : wallPoints[i - nf];
-    set.velocity[i] = fluid ? fluidVelocity[i] : Vec<D>::Zero();
-    set.type[i] = std::uint8_t(fluid ? ParticleType::fluid : ParticleType::wall);
+    const bool fluid = std::size_t(i) < nf, wall = !fluid && std::size_t(i) < nf + nw;
+    const std::size_t o = std::size_t(i) - nf - nw;
+    set.position[i] = fluid ? fluidPoints[i] : wall ? wallPoints[i - nf] : openPoints[o];
+    set.velocity[i] = fluid ? fluidVelocity[i] : wall ? Vec<D>::Zero() : openVelocity[o];
+    set.type[i] = fluid ? std::uint8_t(ParticleType::fluid) : wall ? std::uint8_t(ParticleType::wall) : openType[o];
     set.surface[i] = std::uint8_t(SurfaceClass::interior);
     set.pressure[i] = 0;
     set.density[i] = 0;
     set.id[i] = i;
   }
+  set.nextId = std::int64_t(n);
   return out;
 }
 

@@ -6,7 +6,8 @@
 // the tables in docs/dictionaries.md are generated from those declarations):
 //   spacing  d0 (a length, > 0)
 //   dimension 2 | 3 (optional; the solver chooses 2D or 3D from it; must equal D)
-//   regions { <name> { type fluid|wall; shape box|circle; ... } }   (in file order)
+//   regions { <name> { type fluid|wall|inlet|outlet; shape box|circle; ... } }   (in file order;
+//            inlets and outlets: OpenBoundaryRegion.hpp)
 //   periodic { min (..); max (..); directions (x y); }              (optional)
 //   maxParticles N (optional, at most 2^31 - 1): the regions
 //            are counted before anything is allocated (each region alone,
@@ -66,11 +67,13 @@
 // (checkAllRead on particlesDict).
 //
 // Output: fluid particles first (regions in file order, x fastest), then wall
-// particles; id = index; pressure, density, surface = 0; spacing = d0. Mass
-// and rho0 are set later by the solver.
+// particles, then the inlets' and outlets' buffer particles; id = index, nextId the
+// count; pressure, density, surface = 0; spacing = d0. Mass and rho0 are set later
+// by the solver.
 #pragma once
 #include "core/Dictionary.hpp"
 #include "particles/NeighbourList.hpp"
+#include "particles/OpenBoundaryRegion.hpp"
 #include "particles/ParticleSet.hpp"
 #include "particles/WallBox.hpp"
 
@@ -81,6 +84,7 @@ struct GeneratedParticles {
   ParticleSet<D> set;
   PeriodicBox<D> periodic;
   std::vector<WallBox<D>> walls;  // the wall regions, in file order
+  std::vector<OpenBoundaryRegion<D>> openBoundaries;  // inlets and outlets, in file order
 };
 
 // Default of the `maxParticles` keyword.

@@ -26,11 +26,14 @@ struct ParticleSet {
   double mass = 0;        // particle mass (kg, or kg/m in 2D), calibrated on the initial lattice
   double rho0 = 1000;     // reference density
   double spacing = 0;     // d0 (m)
+  std::int64_t nextId = 0;  // the id the next new particle takes (inlets); every id is below it
 
   std::size_t size() const { return position.size(); }
   double volume() const { return mass / rho0; }
   bool isFluid(std::size_t i) const { return type[i] == std::uint8_t(ParticleType::fluid); }
   bool isWall(std::size_t i) const { return type[i] == std::uint8_t(ParticleType::wall); }
+  bool isInlet(std::size_t i) const { return type[i] == std::uint8_t(ParticleType::inlet); }
+  bool isOutlet(std::size_t i) const { return type[i] == std::uint8_t(ParticleType::outlet); }
   SurfaceClass surfaceClass(std::size_t i) const { return SurfaceClass(surface[i]); }
 
   // Visit every field as (name, vector&). Names are the ones written to VTK.
@@ -64,6 +67,14 @@ struct ParticleSet {
     compact(position);
     forEachField([&](const char*, auto& v) { compact(v); });
     return position.size();
+  }
+  // Append a copy of particle i (every present field); returns the new particle's index.
+  std::size_t addCopy(std::size_t i) {
+    position.push_back(position[i]);
+    forEachField([&](const char*, auto& v) {
+      if (v.size() + 1 == position.size()) v.push_back(v[i]);
+    });
+    return position.size() - 1;
   }
   static bool isMandatory(const std::string& name) {
     return name == "U" || name == "p" || name == "rhoN" || name == "type" || name == "surface" || name == "id";

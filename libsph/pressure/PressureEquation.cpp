@@ -1,5 +1,6 @@
 // PPE assembly and solve, docs/method.md 4.2 and 11 (option A).
 #include "pressure/PressureEquation.hpp"
+#include "boundaries/OpenBoundaryRows.hpp"
 #include "boundaries/WallParticles.hpp"
 #include <algorithm>
 
@@ -19,8 +20,10 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
   fillRows(s, source);
 }
 
-// Which particles are unknowns (fluid not on the free surface; walls with a fluid
-// neighbour), and where each row starts. Returns whether any fluid particle has p = 0.
+// Which particles are unknowns (fluid not on the free surface; walls and inlet particles
+// with a fluid neighbour), and where each row starts. Outlet particles are known: their
+// prescribed pressure (docs/boundaries.md). Returns whether any particle has a given
+// pressure (a free-surface fluid particle at p = 0, an outlet particle).
 template <int D>
 bool PressureEquation<D>::countRows(const FlowState<D>& s) {
   const auto& P = s.particles;
@@ -37,6 +40,9 @@ bool PressureEquation<D>::countRows(const FlowState<D>& s) {
       const auto c = P.surfaceClass(i);
       isUnknown = !(c == SurfaceClass::free || c == SurfaceClass::splash);
       anyDirichlet += !isUnknown;
+    } else if (hasPrescribedPressure(s, i)) {
+      isUnknown = false;
+      ++anyDirichlet;
     } else {
       isUnknown = false;
       for (Index k = nl.begin(i); k < nl.end(i); ++k)
@@ -87,7 +93,7 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
       continue;
     }
     Index diagPos = -1;
-    double diag = 0, rhs = 0;
+    double diag = 0, rhs = 0, known = 0;
     auto putDiag = [&]() { diagPos = pos; col[pos] = int(i); val[pos++] = 0; };
     if (s.isFluid(i)) {
       // -sum_j V L_ij (p_j - p_i) = -b_i. A row whose weights break the M-matrix
@@ -107,12 +113,16 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
         const Index j = nl.j[k];
         const double c = V * (mMatrix ? s.weights.lapW[k] : -2.0 * s.kernel.dwdr(nl.r[k]) / nl.r[k]);
         diag += c;
-        if (!unknown_[j]) continue;
+        if (!unknown_[j]) {
+          if (hasPrescribedPressure(s, j)) known += c * s.particles.pressure[j];
+          continue;
+        }
         if (diagPos < 0 && j > i) putDiag();
         col[pos] = int(j);
         val[pos++] = -c;
       }
       rhs = -source[i];
+      if (known != 0) rhs += known;  // outlet neighbours' prescribed pressure
     } else {
       const AdamiRow<D> row = AdamiRow<D>::compute(s, i);
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
@@ -151,7 +161,7 @@ LinearSolveResult PressureEquation<D>::solve(FlowState<D>& s) {
   LinearSolveResult res = numUnknowns_ > 0 ? solver_->solve(A_, b_, x_) : LinearSolveResult{true, 0, 0, ""};
   if (numUnknowns_ == 0) x_.setZero();
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) p[i] = unknown_[i] ? x_[i] : 0.0;
+  for (long i = 0; i < n; ++i) p[i] = unknown_[i] ? x_[i] : hasPrescribedPressure(s, i) ? p[i] : 0.0;
   return res;
 }
 

@@ -137,7 +137,7 @@ BOOST_AUTO_TEST_CASE(particleValuesNameTheParticle) {
     return p;
   };
   const double nan = std::nan(""), inf = INFINITY;
-  refused(Restart(with([](auto& p) { p.type[4] = 7; })), {"particle id 4 (point 4): type 7 is neither fluid (0) nor wall (1)"});
+  refused(Restart(with([](auto& p) { p.type[4] = 7; })), {"particle id 4 (point 4): type 7 is none of fluid (0), wall (1), inlet (2), outlet (3)"});
   refused(Restart(with([](auto& p) { p.surface[4] = 9; })), {"particle id 4 (point 4): surface class 9"});
   refused(Restart(with([&](auto& p) { p.position[2][1] = nan; })), {"particle id 2 (point 2): position is (0.02 nan), not finite"});
   refused(Restart(with([&](auto& p) { p.velocity[3][0] = inf; })), {"particle id 3 (point 3): U is (inf -0.2)"});

@@ -1,0 +1,135 @@
+// Inlets and outlets at run time: see OpenBoundaries.hpp.
+#include "boundaries/OpenBoundaries.hpp"
+#include "core/Log.hpp"
+#include <cmath>
+
+namespace shizuku {
+
+namespace {
+std::string fmt(double x) { return formatNumber(x); }
+template <int D> std::string fmt(const Vec<D>& v) { return formatNumber<D>(v); }
+}  // namespace
+
+template <int D>
+OpenBoundaries<D>::OpenBoundaries(std::vector<OpenBoundaryRegion<D>> regions, const FlowState<D>& s,
+                                  const Domain<D>& domain)
+    : regions_(std::move(regions)), d0_(s.d0) {
+  const double support = s.kernel.support();
+  for (const auto& b : regions_) {
+    const char* kind = b.inlet ? "inlet" : "outlet";
+    const bool faceAtMax = b.face == b.max[b.axis];
+    if (b.length() < support * (1 - 1e-9))
+      b.dict->error(faceAtMax ? "min" : "max",
+                    cat(kind, " '", b.name, "' is ", fmt(b.length()), " m = ", fmt(b.length() / s.d0),
+                        " spacings long along its direction; it must cover the kernel support 2h = ", fmt(support),
+                        " m (", std::ceil(support / s.d0 - 1e-9), " spacings), so that fluid at its face has all "
+                        "its neighbours"));
+    if (domain.bounded() && !(domain.contains(b.min) && domain.contains(b.max)))
+      b.dict->error(domain.contains(b.min) ? "max" : "min",
+                    cat(kind, " '", b.name, "' box ", fmt<D>(b.min), "-", fmt<D>(b.max), " reaches outside the domain ",
+                        domain.describe(), ": give the walls or controlDict's domain room for it"));
+    velocity_.push_back(b.inlet ? std::make_unique<InletVelocity<D>>(b) : nullptr);
+    crossings_.push_back({b.name, b.inlet, 0});
+  }
+}
+
+template <int D>
+OpenBoundaries<D>::~OpenBoundaries() = default;
+
+template <int D>
+std::vector<std::string> OpenBoundaries<D>::describe() const {
+  std::vector<std::string> v;
+  for (const auto& b : regions_)
+    v.push_back(b.describe() + (b.inlet ? "; releases fluid at its face, pressure by the wall rule"
+                                        : "; captures fluid at its face, velocity from the fluid (zero gradient)"));
+  return v;
+}
+
+// The region of a buffer particle: the nearest box of its kind (the particle is in it, or
+// has just crossed its face by less than a step's travel).
+template <int D>
+int OpenBoundaries<D>::regionOf(const Vec<D>& x, bool inlet) const {
+  int best = -1;
+  double bestD = INFINITY;
+  for (std::size_t r = 0; r < regions_.size(); ++r) {
+    const auto& b = regions_[r];
+    if (b.inlet != inlet) continue;
+    const double d = (x - x.cwiseMax(b.min).cwiseMin(b.max)).squaredNorm();
+    if (d < bestD) { bestD = d; best = int(r); }
+  }
+  return best;
+}
+
+template <int D>
+void OpenBoundaries<D>::prescribe(FlowState<D>& s) {
+  auto& P = s.particles;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.isInlet(i)) {
+      const int r = regionOf(P.position[i], true);
+      Vec<D> u;
+      try {
+        u = (*velocity_[r])(P.position[i], s.time);
+      } catch (const VelocityExpressionError& e) {
+        throw NumericalError(cat("inlet '", regions_[r].name, "': ", e.what(), " at ", fmt<D>(P.position[i]),
+                                 " m, t = ", s.time, " s"));
+      }
+      if (!u.allFinite())
+        throw NumericalError(cat("inlet '", regions_[r].name, "': the velocity expressions give ", fmt<D>(u), " at ",
+                                 fmt<D>(P.position[i]), " m, t = ", s.time, " s"));
+      P.velocity[i] = u;
+    } else if (P.isOutlet(i)) {
+      P.pressure[i] = regions_[regionOf(P.position[i], false)].pressure;
+    }
+  }
+}
+
+template <int D>
+bool OpenBoundaries<D>::afterStep(FlowState<D>& s) {
+  auto& P = s.particles;
+  const double dt = s.dt;
+  const std::size_t n = P.size();
+  bool changed = false;
+  bool anyRemoved = false;
+  remove_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (P.isInlet(i)) {
+      P.position[i] += dt * P.velocity[i];
+      const int r = regionOf(P.position[i], true);
+      const auto& b = regions_[r];
+      if (b.pastFace(P.position[i]) <= 0) continue;
+      // Released: it becomes fluid; its replacement goes one buffer length upstream.
+      P.type[i] = std::uint8_t(ParticleType::fluid);
+      const std::size_t k = P.addCopy(i);
+      P.type[k] = std::uint8_t(ParticleType::inlet);
+      P.position[k][b.axis] -= b.sign * b.length();
+      P.id[k] = P.nextId++;
+      remove_.push_back(0);
+      ++crossings_[r].count;
+      ++s.balance.released;
+      changed = true;
+    } else if (P.isOutlet(i)) {
+      P.position[i] += dt * P.velocity[i];
+      const int r = regionOf(P.position[i], false);
+      if (regions_[r].pastFarFace(P.position[i]) > 0) { remove_[i] = 1; anyRemoved = true; }
+    } else if (P.isFluid(i)) {
+      for (std::size_t r = 0; r < regions_.size(); ++r) {
+        const auto& b = regions_[r];
+        if (b.inlet || b.pastFace(P.position[i]) <= 0 || !b.acrossInside(P.position[i], 0.5 * d0_)) continue;
+        P.type[i] = std::uint8_t(ParticleType::outlet);
+        ++crossings_[r].count;
+        ++s.balance.captured;
+        changed = true;
+        if (b.pastFarFace(P.position[i]) > 0) { remove_[i] = 1; anyRemoved = true; }
+        break;
+      }
+    }
+  }
+  if (anyRemoved) P.removeMarked(remove_);
+  prescribe(s);
+  return changed || anyRemoved;
+}
+
+template class OpenBoundaries<2>;
+template class OpenBoundaries<3>;
+
+}  // namespace shizuku
