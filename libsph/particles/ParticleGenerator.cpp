@@ -561,6 +561,24 @@ void checkNoFluidInside(const OpenBoundaryRegion<D>& b, const std::vector<Vec<D>
   }
 }
 
+// The buffer particles of every inlet and outlet (OpenBoundaryRegion.hpp), with their
+// velocities and types, after checking that no fluid lies inside a buffer.
+template <int D>
+void fillOpenBoundaries(const Dictionary& regionsDict, const std::vector<OpenBoundaryRegion<D>>& regions,
+                        const std::vector<Vec<D>>& fluidPoints, const std::vector<Vec<D>>& fluidVelocity,
+                        const PointGrid<D>& wallGrid, double d0, std::vector<Vec<D>>& points,
+                        std::vector<Vec<D>>& velocity, std::vector<std::uint8_t>& type) {
+  for (const auto& b : regions) {
+    checkNoFluidInside<D>(b, fluidPoints, kSlack * d0);
+    const std::size_t before = points.size();
+    fillOpenBoundaryRegion<D>(b, d0, fluidPoints, fluidVelocity,
+                              [&](const Vec<D>& x) { return wallGrid.anyCloserThan(x, 0.5 * d0); }, points, velocity);
+    type.resize(points.size(), std::uint8_t(b.inlet ? ParticleType::inlet : ParticleType::outlet));
+    if (b.inlet && points.size() == before)
+      regionsDict.error(b.name, "inlet '" + b.name + "' holds no particle: its box lies within the walls' layers");
+  }
+}
+
 double readSpacing(const Dictionary& particlesDict) { return spacing.read(particlesDict); }
 
 template <int D>
@@ -630,16 +648,8 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
   }
   std::vector<Vec<D>> openPoints, openVelocity;
   std::vector<std::uint8_t> openType;
-  for (const auto& b : out.openBoundaries) {
-    checkNoFluidInside<D>(b, fluidPoints, tol);
-    const std::size_t before = openPoints.size();
-    fillOpenBoundaryRegion<D>(b, d0, fluidPoints, fluidVelocity,
-                              [&](const Vec<D>& x) { return wallGrid.anyCloserThan(x, 0.5 * d0); }, openPoints,
-                              openVelocity);
-    openType.resize(openPoints.size(), std::uint8_t(b.inlet ? ParticleType::inlet : ParticleType::outlet));
-    if (b.inlet && openPoints.size() == before)
-      regionsDict.error(b.name, "inlet '" + b.name + "' holds no particle: its box lies within the walls' layers");
-  }
+  fillOpenBoundaries<D>(regionsDict, out.openBoundaries, fluidPoints, fluidVelocity, wallGrid, d0, openPoints,
+                        openVelocity, openType);
   dict.checkAllRead();
   for (const auto& w : walls) out.walls.push_back({w.name, w.min, w.max, w.outerMin, w.outerMax, w.open, w.layers, d0});
 
