@@ -51,6 +51,16 @@ Vec<D> PeriodicBox<D>::difference(const Vec<D>& a, const Vec<D>& b) const {
 }
 
 // ---------------------------------------------------------------- Impl
+// Cells along axis a of a grid of cell size cs over [mn, mx]; periodic: the box's
+// length in whole cells, at least one.
+namespace {
+template <int D>
+double cellsAlong(int a, const Vec<D>& mn, const Vec<D>& mx, double cs, const PeriodicBox<D>& box) {
+  return box.periodic[a] ? std::max(1.0, std::floor((box.hi[a] - box.lo[a]) / cs))
+                         : std::floor((mx[a] - mn[a]) / cs) + 1;
+}
+}  // namespace
+
 template <int D>
 struct NeighbourSearch<D>::Impl {
   // grid
@@ -74,8 +84,6 @@ struct NeighbourSearch<D>::Impl {
   std::vector<std::uint8_t> rowThread;
 
   void setupGrid(const std::vector<Vec<D>>& x, double radius, const PeriodicBox<D>& box);
-  // Number of cells of a grid of cell size cs over [mn, mx] (periodic: the box).
-  double cellsFor(const Vec<D>& mn, const Vec<D>& mx, double cs, const PeriodicBox<D>& box) const;
   // The box of the bulk of the particles: per direction the quantiles q and 1 - q
   // of the coordinate, widened by a tenth of their distance and the radius.
   void bulkBox(const std::vector<Vec<D>>& x, double radius, Vec<D>& mn, Vec<D>& mx);
@@ -120,23 +128,22 @@ void NeighbourSearch<D>::Impl::setupGrid(const std::vector<Vec<D>>& x, double ra
   // sparse cloud), the cells are enlarged, which keeps the search correct (any
   // cell size >= radius is) and the memory bounded.
   const double maxCells = std::min(8.0 * double(n) + 4096.0, double(1 << 30));
-  if (cellsFor(mn, mx, radius, box) > maxCells) bulkBox(x, radius, mn, mx);
+  double cells = 1;
+  for (int a = 0; a < D; ++a) cells *= cellsAlong<D>(a, mn, mx, radius, box);
+  if (cells > maxCells) bulkBox(x, radius, mn, mx);
   double cs = radius;
   for (;;) {
     double total = 1;
     for (int a = 0; a < D; ++a) {
-      int m;
+      const double mm = cellsAlong<D>(a, mn, mx, cs, box);
+      const int m = mm > 2e9 ? 2000000000 : int(mm);
       if (box.periodic[a]) {
         const double L = box.hi[a] - box.lo[a];
-        m = std::max(1, int(std::floor(L / cs)));
         lo[a] = box.lo[a];
         invCell[a] = m / L;
         period[a] = L;
         halfPeriod[a] = 0.5 * L;
       } else {
-        const double ext = mx[a] - mn[a];
-        const double mm = std::floor(ext / cs) + 1;
-        m = mm > 2e9 ? 2000000000 : int(mm);
         lo[a] = mn[a];
         invCell[a] = 1.0 / cs;
         period[a] = halfPeriod[a] = 0;
@@ -153,16 +160,6 @@ void NeighbourSearch<D>::Impl::setupGrid(const std::vector<Vec<D>>& x, double ra
     s *= nc[a];
   }
   numCells = s;
-}
-
-template <int D>
-double NeighbourSearch<D>::Impl::cellsFor(const Vec<D>& mn, const Vec<D>& mx, double cs,
-                                          const PeriodicBox<D>& box) const {
-  double total = 1;
-  for (int a = 0; a < D; ++a)
-    total *= box.periodic[a] ? std::max(1.0, std::floor((box.hi[a] - box.lo[a]) / cs))
-                             : std::floor((mx[a] - mn[a]) / cs) + 1;
-  return total;
 }
 
 template <int D>

@@ -87,6 +87,7 @@ struct Region {
   Vec<D> centre = Vec<D>::Zero();
   double radius = 0;
   std::array<long, D> cells{};            // box: cells per direction
+  Vec<D> step = Vec<D>::Zero();           // fluid box: the spacing per direction (fluidSpacing)
   int layers = 0;
   std::array<bool, 2 * D> open{};         // wall faces -x +x -y +y -z +z
   Vec<D> outerMin = Vec<D>::Zero(), outerMax = Vec<D>::Zero();  // wall: surface grown by the layers
@@ -157,19 +158,16 @@ Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, con
   if (shape.read(r) == "box") {
     readBox<D>(r, reg, d0);
     double count = 1;
-    std::array<double, D> n;
     for (int k = 0; k < D; ++k) {
-      n[k] = std::floor((reg.max[k] - reg.min[k]) / d0 + kSlack);
-      if (n[k] < 1)
+      const WallSpacing a = fluidSpacing(reg.min[k], reg.max[k], d0);
+      if (a.spacings < 1 - 1e-6)
         r.error("max", std::string("the box is thinner than one spacing (d0 = ") + fmt(d0) + " m) in " +
                            axisName(k));
-      count *= n[k];
+      reg.cells[k] = a.intervals;
+      reg.step[k] = a.spacing;
+      count *= double(reg.cells[k]);
     }
     if (count > limit) tooMany(regions, name, "fluid", count, limit, d0);
-    for (int k = 0; k < D; ++k) {
-      reg.cells[k] = long(n[k]);
-      reg.max[k] = reg.min[k] + reg.cells[k] * d0;  // the filled part
-    }
   } else {
     reg.circle = true;
     reg.centre = centre.read<D>(r);
@@ -240,7 +238,7 @@ void fillFluid(Region<D>& reg, double d0) {
     std::array<long, D> lo{};
     forEachIndex<D>(lo, reg.cells, [&](const std::array<long, D>& i) {
       Vec<D> x;
-      for (int k = 0; k < D; ++k) x[k] = reg.min[k] + (double(i[k]) + 0.5) * d0;
+      for (int k = 0; k < D; ++k) x[k] = reg.min[k] + (double(i[k]) + 0.5) * reg.step[k];
       reg.points.push_back(x);
     });
     return;

@@ -15,12 +15,16 @@
 //            limit is an InputError naming the region and the count.
 //
 // Fluid regions
-//   shape box:    min, max. Particles at the cell centres min + (i + 1/2) d0,
-//                 i = 0 .. n-1 with n = floor((max - min)/d0) per direction
-//                 (1e-9 slack for round-off). If the size is not a whole
-//                 number of spacings, the cells are filled from `min` and the
-//                 strip thinner than d0 left at the `max` side stays empty;
-//                 this is not reported.
+//   shape box:    min, max. Per direction k, with L_k = max_k - min_k:
+//                 a whole number n of spacings (within 1e-6 d0): particles at
+//                 min_k + (i + 1/2) d0, i = 0 .. n-1 (the d0 lattice);
+//                 otherwise m = round(L_k/d0) intervals of s_k = L_k/m
+//                 (WallLattice.hpp fluidSpacing), particles at
+//                 min_k + (i + 1/2) s_k, so the box is filled to both faces:
+//                 against a wall of any size the outer particles sit
+//                 s_k/2 = d0/2 (1 +- 1/(2m)) from the wall surface, as on the
+//                 d0 lattice (no empty strip at the `max` side), and no two
+//                 are closer than 0.75 d0. Not reported.
 //   shape circle: centre, radius (a sphere in 3D; `sphere` is accepted as
 //                 another name). Lattice: centre + (i + 1/2) d0 in every
 //                 direction, i any integer, i.e. the lattice of a box whose

@@ -1,5 +1,6 @@
 // The lattice of a wall box of any size: see WallLattice.hpp.
 #include "particles/WallLattice.hpp"
+#include <algorithm>
 #include <cmath>
 
 namespace shizuku {
@@ -11,6 +12,14 @@ WallSpacing wallSpacing(double min, double max, double d0) {
   a.whole = n >= 1 && std::abs(a.spacings - n) <= 1e-6;
   a.intervals = a.whole ? long(n) : long(std::ceil(a.spacings));
   a.spacing = a.whole ? d0 : (max - min) / double(a.intervals);
+  return a;
+}
+
+WallSpacing fluidSpacing(double min, double max, double d0) {
+  WallSpacing a = wallSpacing(min, max, d0);
+  if (a.whole) return a;
+  a.intervals = std::max(1L, std::lround(a.spacings));
+  a.spacing = (max - min) / double(a.intervals);
   return a;
 }
 

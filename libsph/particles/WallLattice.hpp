@@ -1,5 +1,6 @@
-// The particle lattice of one wall box of any size (docs/method.md 11, "Wall boxes
-// of any size"; docs/boundaries.md). Along each axis k the wall box's surface
+// The particle lattice of one wall box of any size, and the spacing of a fluid box
+// of any size (fluidSpacing below) (docs/method.md 11, "Wall boxes of any size";
+// docs/boundaries.md). Along each axis k the wall box's surface
 // [min_k, max_k] has length L_k:
 //  - if L_k is a whole number n of spacings (within 1e-6 d0), the axis is the plain
 //    lattice min_k + (i + 1/2) d0, i = -layers .. n + layers - 1 (bit for bit what
@@ -36,6 +37,15 @@ struct WallSpacing {
   double spacing = 0;      // s = L/m (exactly d0 on a whole-number axis)
 };
 WallSpacing wallSpacing(double min, double max, double d0);
+
+// How a FLUID box fills one axis of length L = max - min: d0 on a whole number n of
+// spacings (as wallSpacing); otherwise m = round(L/d0) >= 1 intervals of s = L/m, so
+// the particles at min + (i + 1/2) s sit s/2 = d0/2 (1 +- 1/(2m)) from both faces
+// and no strip opens against a wall at either side. Nearest, not ceil: the fluid
+// keeps its number density within 1/(2m) of the d0 lattice the mass is calibrated
+// on (ceil would make it up to 1/m over-dense and, in 3D, class the top row next to
+// the walls interior). Spacing between 0.75 d0 and 1.5 d0 (m = 1 up to L = 1.5 d0).
+WallSpacing fluidSpacing(double min, double max, double d0);
 
 // The coordinates of one axis of a wall box, in increasing order.
 struct WallAxis : WallSpacing {

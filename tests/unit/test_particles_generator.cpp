@@ -169,12 +169,56 @@ BOOST_AUTO_TEST_CASE(wall_layers_and_open_faces) {
 }
 
 BOOST_AUTO_TEST_CASE(box_not_a_multiple_of_the_spacing) {
-  // 0.255 / 0.01 = 25.5: 25 cells from min; the thinner strip at the max side stays empty
+  // 0.255 / 0.01 = 25.5: round -> 26 intervals of 0.255/26 from min to max, no empty strip
   const auto g = generate<2>("spacing 0.01; regions { f { type fluid; shape box; min (0 0); max (0.255 0.01); } }");
-  BOOST_TEST(g.set.size() == 25u);
-  BOOST_TEST(highest(g.set.position, 0, 25)[0] == 0.245, boost::test_tools::tolerance(kPos));
-  // 0.3 / 0.1 = 2.9999999999999996 in floating point: still 3 cells
-  BOOST_TEST(generate<2>("spacing 0.1; regions { f { type fluid; shape box; min (0 0); max (0.3 0.1); } }").set.size() == 3u);
+  BOOST_TEST(g.set.size() == 26u);
+  BOOST_TEST(lowest(g.set.position, 0, 26)[0] == 0.5 * 0.255 / 26, boost::test_tools::tolerance(kPos));
+  BOOST_TEST(highest(g.set.position, 0, 26)[0] == 0.255 - 0.5 * 0.255 / 26, boost::test_tools::tolerance(kPos));
+  // 0.252 / 0.01 = 25.2: 25 intervals of 0.01008
+  BOOST_TEST(generate<2>("spacing 0.01; regions { f { type fluid; shape box; min (0 0); max (0.252 0.01); } }")
+                 .set.size() == 25u);
+  // 0.3 / 0.1 = 2.9999999999999996 in floating point: still 3 cells at d0
+  const auto w = generate<2>("spacing 0.1; regions { f { type fluid; shape box; min (0 0); max (0.3 0.1); } }");
+  BOOST_TEST(w.set.size() == 3u);
+  BOOST_TEST(highest(w.set.position, 0, 3)[0] == 0.25, boost::test_tools::tolerance(kPos));
+}
+
+namespace {
+// Water filling a tank of (n + r) d0 across (x, and z in 3D) and 6 d0 deep, walls 3 layers,
+// d0 = 1: the outer fluid columns must sit d0/2 (1 +- 1/(2m)) from the wall surfaces on both
+// sides (m = round(n + r)) and no two particles, fluid or wall, closer than 0.5 d0 (brute force).
+template <int D>
+void checkFluidAgainstNonWholeWalls(double width) {
+  auto v = [&](double x, double y) {
+    return "(" + std::to_string(x) + " " + std::to_string(y) + (D == 3 ? " " + std::to_string(x) : "") + ")";
+  };
+  const auto g = generate<D>("spacing 1; regions { f { type fluid; shape box; min " + v(0, 0) + "; max " +
+                             v(width, 6) + "; }\n t { type wall; shape box; min " + v(0, 0) + "; max " +
+                             v(width, 8) + "; open (top); } }");
+  const auto& x = g.set.position;
+  const std::size_t nf = countType(g.set, ParticleType::fluid);
+  const double m = std::max(1.0, std::round(width)), slack = 0.25 / m + 1e-9;
+  BOOST_TEST_CONTEXT(D << "D tank " << width << " d0 wide") {
+    for (int k = 0; k < D; k += 2) {
+      BOOST_TEST(std::abs(lowest(x, 0, nf)[k] - 0.5) <= slack);
+      BOOST_TEST(std::abs(width - highest(x, 0, nf)[k] - 0.5) <= slack);
+    }
+    BOOST_TEST(nf == std::size_t(std::pow(m, D - 1) * 6));
+    double closest = 1e9;
+    for (std::size_t i = 0; i < nf; ++i)
+      for (std::size_t j = i + 1; j < x.size(); ++j) closest = std::min(closest, (x[i] - x[j]).norm());
+    BOOST_TEST(closest >= 0.5 - 1e-9);
+  }
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(fluid_box_fills_a_tank_of_any_size_to_both_walls) {
+  for (double r : {0.0, 0.01, 0.1, 0.25, 0.3, 0.49, 0.5, 0.51, 0.75, 0.9, 0.99}) {
+    checkFluidAgainstNonWholeWalls<2>(12 + r);
+    checkFluidAgainstNonWholeWalls<3>(5 + r);
+  }
+  checkFluidAgainstNonWholeWalls<2>(1.4);  // one column, 0.7 d0 from each wall
+  checkFluidAgainstNonWholeWalls<2>(1.6);  // two columns of 0.8 d0
 }
 
 BOOST_AUTO_TEST_CASE(circle_and_sphere_counts) {
