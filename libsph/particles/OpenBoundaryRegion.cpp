@@ -36,9 +36,15 @@ void readDirection(const Dictionary& r, OpenBoundaryRegion<D>& b) {
   for (int k = 0; k < D; ++k)
     if (d[k] != 0) { ++nonZero; axis = k; }
   if (nonZero == 0) r.error("direction", "direction " + fmt<D>(d) + " is zero: give the flow direction, an axis such as (1 0)");
-  if (nonZero > 1)
+  if (nonZero > 1) {
+    int big = 0;
+    for (int k = 1; k < D; ++k)
+      if (std::abs(d[k]) > std::abs(d[big])) big = k;
+    Vec<D> nearest = Vec<D>::Zero();
+    nearest[big] = d[big] > 0 ? 1 : -1;
     r.error("direction", "direction " + fmt<D>(d) + " is oblique: inlets and outlets are boxes whose direction is an axis (+-x, +-y" +
-                             std::string(D == 3 ? ", +-z)" : ")"));
+                             std::string(D == 3 ? ", +-z)" : ")") + "; did you mean direction " + fmt<D>(nearest) + "?");
+  }
   b.axis = axis;
   b.sign = d[axis] > 0 ? 1 : -1;
 }
@@ -120,7 +126,8 @@ OpenBoundaryRegion<D> readOpenBoundaryRegion(const Dictionary& r, const std::str
   const double centre = 0.5 * (min[k] + max[k]);
   const double towardWalls = b.sign * (wallsCentre[k] - centre);
   if (inlet ? towardWalls < 0 : towardWalls > 0) {
-    Vec<D> flipped = -b.direction();
+    Vec<D> flipped = Vec<D>::Zero();  // (no -0 in the suggestion)
+    flipped[k] = -b.sign;
     r.error("direction", std::string(inlet ? "inlet" : "outlet") + " '" + name + "': direction " + fmt<D>(b.direction()) +
                              " points " + (inlet ? "away from" : "into") + " the domain (its centre lies at " +
                              fmt(wallsCentre[k]) + " m along " + std::string(1, "xyz"[k]) + "); an " +
