@@ -9,7 +9,7 @@
 //   - ids stay unique, and each step's new ids are inlet particles numbered from the
 //     previous nextId up;
 //   - a captured particle takes the outlet's pressure; an expression inlet velocity
-//     u = 4 Umax y (H - y) / H^2 (1 + t) is applied to every inlet particle.
+//     u = 4 Umax y (H - y) / H^2 (1 + t) is applied to every inlet particle, and described.
 #define BOOST_TEST_MODULE boundaries_openBoundaries
 #include <boost/test/unit_test.hpp>
 
@@ -212,7 +212,8 @@ void expressionVelocity() {
     BOOST_TEST(n == 4 * rows<D>());
   };
   check(0.0);
-  // At the centre line y = 0.025 m: u = Umax = 0.15 m/s at t = 0.
+  BOOST_TEST(c.open->describe()[0].find("velocity (\"4*0.15*y*(0.05-y)/0.05^2*(1+t)\" \"0\"") != std::string::npos);
+  // Ten steps later, at t = 0.2 s.
   for (int n = 0; n < 10; ++n) c.step(0.02);
   check(0.2);
   BOOST_TEST(c.s.balance.released > 0);
