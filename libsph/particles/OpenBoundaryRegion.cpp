@@ -49,6 +49,33 @@ void readDirection(const Dictionary& r, OpenBoundaryRegion<D>& b) {
   b.sign = d[axis] > 0 ? 1 : -1;
 }
 
+// A box beside the domain lies on one side of its centre along its direction; one that
+// spans the centre along it (an inlet at the left end given direction (0 1)) would
+// release into, or capture from, a side wall. The suggestion: the axis along which the
+// box lies furthest from the centre, pointing into the domain (an inlet) or out of it.
+template <int D>
+void checkNotSideways(const Dictionary& r, const OpenBoundaryRegion<D>& b, const Vec<D>& wallsCentre) {
+  const int k = b.axis;
+  if (wallsCentre[k] < b.min[k] || wallsCentre[k] > b.max[k]) return;
+  int best = -1;
+  double furthest = 0;
+  for (int j = 0; j < D; ++j) {
+    const double out = std::max(b.min[j] - wallsCentre[j], wallsCentre[j] - b.max[j]);
+    if (out > furthest) { furthest = out; best = j; }
+  }
+  const char* kind = b.inlet ? "inlet" : "outlet";
+  std::string fix;
+  if (best >= 0) {
+    Vec<D> d = Vec<D>::Zero();
+    d[best] = ((wallsCentre[best] > b.max[best]) == b.inlet) ? 1 : -1;
+    fix = ": did you mean direction " + fmt<D>(d) + "?";
+  }
+  r.error("direction", std::string(kind) + " '" + b.name + "': direction " + fmt<D>(b.direction()) +
+                           " runs along the domain's side, not " + (b.inlet ? "into" : "out of") +
+                           " it: the box spans the domain's centre (" + fmt(wallsCentre[k]) + " m) along " +
+                           std::string(1, "xyz"[k]) + ", so its face would meet a wall, not the fluid" + fix);
+}
+
 // The inlet's velocity keys, checked by evaluating them on the box's lattice at t = 0.
 template <int D>
 void readInletVelocity(const Dictionary& r, OpenBoundaryRegion<D>& b, double d0) {
@@ -123,6 +150,7 @@ OpenBoundaryRegion<D> readOpenBoundaryRegion(const Dictionary& r, const std::str
   const bool faceAtMax = (b.sign > 0) == inlet;
   b.face = faceAtMax ? max[k] : min[k];
   b.farFace = faceAtMax ? min[k] : max[k];
+  checkNotSideways<D>(r, b, wallsCentre);
   const double centre = 0.5 * (min[k] + max[k]);
   const double towardWalls = b.sign * (wallsCentre[k] - centre);
   if (inlet ? towardWalls < 0 : towardWalls > 0) {

@@ -9,12 +9,14 @@
 //   - ids stay unique, and each step's new ids are inlet particles numbered from the
 //     previous nextId up;
 //   - a captured particle takes the outlet's pressure; an expression inlet velocity
-//     u = 4 Umax y (H - y) / H^2 (1 + t) is applied to every inlet particle, and described.
+//     u = 4 Umax y (H - y) / H^2 (1 + t) is applied to every inlet particle, and described;
+//   - 3D input errors name the keyword and suggest the fix (the 2D ones are bad-input cases).
 #define BOOST_TEST_MODULE boundaries_openBoundaries
 #include <boost/test/unit_test.hpp>
 
 #include "boundaries/OpenBoundaries.hpp"
 #include "particles/ParticleGenerator.hpp"
+#include "../support/ErrorOf.hpp"
 #include <cmath>
 #include <set>
 
@@ -219,7 +221,41 @@ void expressionVelocity() {
   BOOST_TEST(c.s.balance.released > 0);
 }
 
+// The error a 3D duct gives with `from` replaced by `to` in its particlesDict.
+std::string error3d(const std::string& from, const std::string& to) {
+  std::string text = duct<3>(uniformInlet<3>(), 0);
+  const std::size_t at = text.find(from);
+  BOOST_TEST_REQUIRE(at != std::string::npos);
+  text.replace(at, from.size(), to);
+  return test::errorOf([&] { Duct<3> c(text); });
+}
+
 }  // namespace
+
+BOOST_AUTO_TEST_CASE(input_errors_3d) {
+  const std::string in = "max (0 0.05 0.05); direction (1 0 0)", out = "max (0.14 0.05 0.05); direction (1 0 0)";
+  const std::vector<std::array<std::string, 3>> cases = {
+      {in, "max (0 0.05 0.05); direction (0 0 1)",
+       "keyword 'direction': inlet 'inflow': direction (0 0 1) runs along the domain's side, not into it: the box spans "
+       "the domain's centre (0.025 m) along z, so its face would meet a wall, not the fluid: did you mean direction (1 0 0)?"},
+      {in, "max (0 0.05 0.05); direction (2 0 1)", "is oblique: inlets and outlets are boxes whose direction is an axis "
+                                                   "(+-x, +-y, +-z); did you mean direction (1 0 0)?"},
+      {out, "max (0.14 0.05 0.05); direction (-1 0 0)", "outlet 'outflow': direction (-1 0 0) points into the domain "
+                                                        "(its centre lies at 0.05 m along x); an outlet's direction points "
+                                                        "out of it: did you mean direction (1 0 0)?"},
+      {out, "max (0.135 0.05 0.05); direction (1 0 0)", "keyword 'max': the length of outlet 'outflow' along its direction "
+                                                        "is 0.035 m = 3.5 spacings (d0 = 0.01 m): it must be a whole number "
+                                                        "of spacings; did you mean max (0.14 0.05 0.05)?"},
+      {"min (-0.04 0 0); max (0 0.05 0.05)", "min (-0.02 0 0); max (0 0.05 0.05)",
+       "keyword 'min': inlet 'inflow' is 0.02 m = 2 spacings long along its direction; it must cover the kernel support "
+       "2h = 0.024 m (3 spacings), so that fluid at its face has all its neighbours: did you mean min (-0.03 0 0)?"}};
+  for (const auto& [from, to, expected] : cases) {
+    const std::string msg = error3d(from, to);
+    BOOST_TEST_INFO("'" << to << "' gives: " << msg);
+    BOOST_TEST(msg.find(expected) != std::string::npos);
+    BOOST_TEST(msg.find("case/system/particlesDict:") == 0u);
+  }
+}
 
 BOOST_AUTO_TEST_CASE(plug_flow_counts_2d) { plugFlowCounts<2>(); }
 BOOST_AUTO_TEST_CASE(plug_flow_counts_3d) { plugFlowCounts<3>(); }
