@@ -61,6 +61,7 @@ NumericalScheme<D> CaseSetup<D>::readScheme(const CaseFiles& files, FlowState<D>
       FreeSurfaceParameters::read(sch.subDictPtr("freeSurface"), D));
   scheme.reorderInterval = key::reorderInterval.read(sch);
   scheme.ppe = std::make_unique<PressureEquation<D>>(LinearSolver::create(files.sphSolution.subDictPtr("pressure")));
+  scheme.ppe->setZeroPressureOnSurface(scheme.freeSurface->parameters().zeroPressureOnSurface);
   return scheme;
 }
 

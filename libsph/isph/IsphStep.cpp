@@ -9,6 +9,8 @@ template <int D>
 IsphStep<D>::IsphStep(FlowState<D>& s, NumericalScheme<D> scheme, EffectSet<D> effects, StageTimers& timers)
     : s_(s), scheme_(std::move(scheme)), effects_(std::move(effects)), timers_(timers) {
   needs_ = effects_.needs();
+  // The free-surface pressure condition (eq. 6b) reads the fit's normal and distance.
+  needs_.surfaceFit |= scheme_.ppe->zeroPressureOnSurface() && scheme_.freeSurface->parameters().enabled;
   effects_.allocate(s_);
   if (needs_.surfaceFit) {
     s_.fitDistance.assign(s_.size(), NAN);
@@ -217,7 +219,8 @@ std::vector<std::string> IsphStep<D>::describe() const {
            s_.particles.mass));
   const auto& fp = scheme_.freeSurface->parameters();
   line(fp.enabled ? cat("free surface: divR < ", fp.candidateThreshold, fp.scanRegion ? " + scan region" : "",
-                        ", splash < ", fp.splashThreshold, ", vicinity ", fp.vicinityRadius, " h")
+                        ", splash < ", fp.splashThreshold, ", vicinity ", fp.vicinityRadius, " h",
+                        fp.zeroPressureOnSurface ? ", p = 0 on the surface (eq. 6b)" : ", p = 0 on the particles")
                   : std::string("free surface: off (closed domain, pressure level pinned)"));
   if (needs_.surfaceFit) line("surface fit: leave-one-out line fit, curvature (eqs 19-21)");
   line(cat("derivatives: ", toString(scheme_.derivatives->scheme())));

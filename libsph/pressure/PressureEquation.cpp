@@ -1,5 +1,6 @@
-// PPE assembly and solve, docs/method.md 4.2 and 11 (option A).
+// PPE assembly and solve, docs/method.md 4.2, 4.4 (eq. 6b) and 11 (option A).
 #include "pressure/PressureEquation.hpp"
+#include "pressure/FreeSurfaceRow.hpp"
 #include "boundaries/OpenBoundaryRows.hpp"
 #include "boundaries/WallParticles.hpp"
 #include <algorithm>
@@ -20,10 +21,10 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
   fillRows(s, source);
 }
 
-// Which particles are unknowns (fluid not on the free surface; walls and inlet particles
-// with a fluid neighbour), and where each row starts. Outlet particles are known: their
-// prescribed pressure (docs/boundaries.md). Returns whether any particle has a given
-// pressure (a free-surface fluid particle at p = 0, an outlet particle).
+// Which particles are unknowns (fluid not on the free surface; free-surface particles with
+// an eq. 6b row; walls and inlet particles with a fluid neighbour), and where each row
+// starts. Outlet particles are known: their prescribed pressure (docs/boundaries.md).
+// Returns whether the pressure level is fixed (a free-surface particle, an outlet particle).
 template <int D>
 bool PressureEquation<D>::countRows(const FlowState<D>& s) {
   const auto& P = s.particles;
@@ -31,15 +32,23 @@ bool PressureEquation<D>::countRows(const FlowState<D>& s) {
   const long n = long(s.size());
   unknown_.resize(n);
   rowStart_.resize(n + 1);
+  if (onSurface_) {
+    inward_.resize(n);
+    delta_.resize(n);
+  }
 
   long anyDirichlet = 0, m = 0;
 #pragma omp parallel for schedule(static) reduction(+ : anyDirichlet, m)
   for (long i = 0; i < n; ++i) {
-    bool isUnknown;
+    std::uint8_t isUnknown;
     if (s.isFluid(i)) {
       const auto c = P.surfaceClass(i);
-      isUnknown = !(c == SurfaceClass::free || c == SurfaceClass::splash);
-      anyDirichlet += !isUnknown;
+      const bool onSurface = c == SurfaceClass::free || c == SurfaceClass::splash;
+      isUnknown = !onSurface;
+      anyDirichlet += onSurface;
+      if (c == SurfaceClass::free && onSurface_ && FreeSurfaceRow<D>::frame(s, i, inward_[i], delta_[i]) &&
+          FreeSurfaceRow<D>::depthMoment(s, i, inward_[i]) > 0)
+        isUnknown = 2;
     } else if (hasPrescribedPressure(s, i)) {
       isUnknown = false;
       ++anyDirichlet;
@@ -49,12 +58,16 @@ bool PressureEquation<D>::countRows(const FlowState<D>& s) {
         if (s.isFluid(nl.j[k])) { isUnknown = true; break; }
     }
     unknown_[i] = isUnknown;
-    m += isUnknown;
+    m += isUnknown != 0;
   }
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     Index c = 1;  // diagonal
-    if (unknown_[i])
+    double d = 0;
+    if (unknown_[i] == 2)
+      for (Index k = nl.begin(i); k < nl.end(i); ++k)
+        c += unknown_[nl.j[k]] && FreeSurfaceRow<D>::weight(s, k, inward_[i], d) > 0;
+    else if (unknown_[i])
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const Index j = nl.j[k];
         if (!unknown_[j]) continue;
@@ -89,6 +102,11 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
     if (!unknown_[i]) {
       col[pos] = int(i);
       val[pos] = 1.0;
+      b_[i] = 0;
+      continue;
+    }
+    if (unknown_[i] == 2) {
+      fillSurfaceRow(s, i, pos, col, val);
       b_[i] = 0;
       continue;
     }
@@ -149,6 +167,32 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
         break;
       }
   }
+}
+
+// Eq. 6b divided by sum_j a_ij d_ij (> 0 by countRows): diagonal 1 + delta sum a / sum a d,
+// off-diagonals -delta a_ij / sum a d. Neighbours with a known p (= 0) add only to the sums.
+template <int D>
+void PressureEquation<D>::fillSurfaceRow(const FlowState<D>& s, long i, Index pos, int* col, double* val) {
+  const auto& nl = s.neighbours;
+  const Vec<D>& inward = inward_[i];
+  double sumA = 0, sumAD = 0, d = 0;
+  for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+    const double a = FreeSurfaceRow<D>::weight(s, k, inward, d);
+    sumA += a;
+    sumAD += a * d;
+  }
+  const double scale = delta_[i] / sumAD;
+  Index diagPos = -1;
+  for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+    const Index j = nl.j[k];
+    const double a = FreeSurfaceRow<D>::weight(s, k, inward, d);
+    if (!(a > 0) || !unknown_[j]) continue;
+    if (diagPos < 0 && j > i) { diagPos = pos; col[pos++] = int(i); }
+    col[pos] = int(j);
+    val[pos++] = -scale * a;
+  }
+  if (diagPos < 0) { diagPos = pos; col[pos] = int(i); }
+  val[diagPos] = 1.0 + scale * sumA;
 }
 
 template <int D>

@@ -1,7 +1,10 @@
 // The pressure Poisson equation of the projection step (eqs 5-6/9, docs/method.md 4.2):
 //   interior and vicinity fluid rows:  -<lap p>_i = -b_i   (SPH(2) Laplacian weights, sign flipped so
 //                                      the diagonal is positive)
-//   free-surface and splash particles: p = 0 (Dirichlet, eliminated)
+//   free-surface particles: p = 0 on the surface, delta_i outside the particle: the
+//                           extrapolation row of eq. 6b (FreeSurfaceRow.hpp); with
+//                           freeSurface { pressureCondition particles; } p = 0 on the particle
+//   splash particles (and free ones without a normal or a deeper neighbour): p = 0
 //   wall particles with fluid neighbours: the Adami row (docs/method.md 11 A)
 //   no Dirichlet particle at all (closed or fully periodic domain): one row pinned to p = 0.
 // Every particle has a row, in particle order, so the numbering of the system
@@ -21,6 +24,9 @@ template <int D>
 class PressureEquation {
  public:
   explicit PressureEquation(std::unique_ptr<LinearSolver> solver) : solver_(std::move(solver)) {}
+  // true: p = 0 on the free surface (eq. 6b, the default); false: p = 0 on the free-surface particles.
+  void setZeroPressureOnSurface(bool onSurface) { onSurface_ = onSurface; }
+  bool zeroPressureOnSurface() const { return onSurface_; }
   const LinearSolver& solver() const { return *solver_; }
   // The next solve rebuilds whatever the solver keeps from earlier steps (restart exactness).
   void startAfreshAtNextSolve() { solver_->startAfreshAtNextSolve(); }
@@ -39,8 +45,12 @@ class PressureEquation {
  private:
   bool countRows(const FlowState<D>& s);
   void fillRows(const FlowState<D>& s, const std::vector<double>& source);
+  void fillSurfaceRow(const FlowState<D>& s, long i, Index pos, int* col, double* val);
   std::unique_ptr<LinearSolver> solver_;
-  std::vector<std::uint8_t> unknown_;  // per particle: 1 = solved for, 0 = p = 0
+  bool onSurface_ = true;
+  std::vector<std::uint8_t> unknown_;  // per particle: 0 = p known, 1 = solved for, 2 = eq. 6b row
+  std::vector<Vec<D>> inward_;         // per particle with an eq. 6b row: -n_i
+  std::vector<double> delta_;          // per particle with an eq. 6b row: delta_i
   std::vector<Index> rowStart_;        // per row: start in the CSR arrays
   std::vector<std::int64_t> ids_;      // particle ids of the last assembly (detects reordering)
   SparseMatrixR A_;

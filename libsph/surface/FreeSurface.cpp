@@ -1,6 +1,7 @@
 // Free-surface detection, classes and normals: docs/method.md 5.1-5.3.
 // Reads system/sphSchemes freeSurface { candidateThreshold; splashThreshold;
-// vicinityRadius; enabled; scanRegion; } through the declarations below.
+// vicinityRadius; enabled; scanRegion; pressureCondition; } through the declarations below
+// (pressureCondition is handed to the pressure equation, docs/method.md 4.4).
 #include "surface/FreeSurface.hpp"
 #include "core/Parameter.hpp"
 #include <cmath>
@@ -24,6 +25,9 @@ const SwitchParameter enabled = freeSurface.onOff("enabled",
     "off for a closed domain without free surface (pressure level pinned)").def(true);
 const SwitchParameter scanRegion = freeSurface.onOff("scanRegion",
     "stage 2, Marrone's scan region, on the candidates (off: stage 1 alone)").def(false);
+const OptionParameter pressureCondition = freeSurface.option("pressureCondition", {"surface", "particles"},
+    "where p = 0: on the surface, d0/2 (or the fit's distance) outside the free-surface particles "
+    "(eq. 6b), or on the particles").def("surface");
 
 
 }  // namespace key
@@ -39,6 +43,7 @@ FreeSurfaceParameters FreeSurfaceParameters::read(const Dictionary* dict, int di
   p.vicinityRadius = key::vicinityRadius.read(dict);
   p.enabled = key::enabled.read(dict);
   p.scanRegion = key::scanRegion.read(dict);
+  p.zeroPressureOnSurface = key::pressureCondition.read(dict) == "surface";
   if (!dict) return p;
   if (p.splashThreshold > p.candidateThreshold)
     dict->error("splashThreshold", "must not exceed candidateThreshold");

@@ -7,7 +7,7 @@
 // cone |r_ji| < sqrt(2) h, angle(n_i, r_ji) < pi/4, or, farther away, within h of r_i + h n_i.
 // Vicinity: a non-free fluid particle with a free-surface particle within vicinityRadius (2h).
 // Reads (system/sphSchemes): freeSurface { candidateThreshold; splashThreshold; vicinityRadius;
-// enabled; scanRegion; }; defaults and ranges are declared in FreeSurface.cpp.
+// enabled; scanRegion; pressureCondition; }; defaults and ranges are declared in FreeSurface.cpp.
 #pragma once
 #include "core/Dictionary.hpp"
 #include "operators/FlowState.hpp"
@@ -26,6 +26,9 @@ struct FreeSurfaceParameters {
   // one-sided stencil without a Dirichlet neighbour and the pressure blows up
   // within 0.03 s (measured, tutorials/damBreak); stage 1 alone runs on.
   bool scanRegion{};
+  // p = 0 on the surface, outside the free-surface particles (eq. 6b, docs/method.md 4.4),
+  // rather than on the particles; read here, applied by the pressure equation.
+  bool zeroPressureOnSurface{};
   static FreeSurfaceParameters read(const Dictionary* dict, int dimension);
 };
 

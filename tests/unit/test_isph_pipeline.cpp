@@ -50,7 +50,9 @@ std::string readAll(const std::string& path) {
 
 BOOST_AUTO_TEST_CASE(absent_effects_build_nothing) {
   test::TempCase bare("bare"), full("full");
-  writeCase(bare, "derivatives SPH2;\n", false, 0, "endTime 0.01; deltaT 1e-3;\n");
+  // p = 0 on the particles: the surface condition of eq. 6b (the default) runs the surface fit.
+  writeCase(bare, "derivatives SPH2;\nfreeSurface { pressureCondition particles; }\n", false, 0,
+            "endTime 0.01; deltaT 1e-3;\n");
   writeCase(full, kFull, true, 1e-6, "endTime 0.01; deltaT 1e-3;\n");
   SimulationOptions opt;
   opt.functionObjects = false;
