@@ -3,7 +3,8 @@
 
 usage: channelPoiseuille.py TUTORIAL WORK --shizuku BIN --compare SHIZUKUCOMPARE
                             [--spacing D0 --deltaT DT] [--endTime T] [--threads 2]
-                            [--profileTolerance 0.01] [--fluxTolerance 0.01] [--skip-run]
+                            [--profileTolerance 0.01] [--fluxTolerance 0.01]
+                            [--planeTolerance 0.03] [--skip-run]
 
 Runs tutorials/channelPoiseuille (a plane channel H = 0.1 m, L = 5 H, uniform inlet
 U = 0.01 m/s, outlet at p = 0, no-slip walls, Re = 10, 60 s), at its own size
@@ -15,7 +16,8 @@ run (the last 3/8 of it, t >= 37.5 s):
     equals the flow rate out (captured by the outlet) within fluxTolerance, both from the
     crossing counts of <time>/uniform/time at the first and last write times of the
     window, the flow rate in is U H (the inlet releases H/d0 rows at U/d0 a second), and
-    the time-averaged slab flux through the plane x = 2.5 H (`midPlane`) is U H;
+    the time-averaged slab flux through the plane x = 2.5 H (`midPlane`) is U H within
+    planeTolerance (the slab estimate fluctuates by about 1/N of the particles in it);
   - mass balance: at every write time the fluid mass of `conservation` equals its initial
     value + (released - captured - removed) m, m the particle mass of the vtp, to round-off
     (the 12 digits the file prints), and so at every row from its releasedMass,
@@ -70,6 +72,7 @@ def main():
     ap.add_argument("--endTime")
     ap.add_argument("--profileTolerance", type=float, default=0.01)
     ap.add_argument("--fluxTolerance", type=float, default=0.01)
+    ap.add_argument("--planeTolerance", type=float, default=0.03)
     ap.add_argument("--name", default="channelPoiseuille")
     ap.add_argument("--skip-run", action="store_true", help="check an existing work case again")
     a = ap.parse_args()
@@ -114,8 +117,8 @@ def main():
         q_plane = q[t >= t_from - 1e-9].mean()
         print(f"flux through the plane x = 2.5 H, mean over t >= {t_from:g} s: {q_plane:.6g} m^2/s "
               f"({100 * (q_plane / (U * H) - 1):+.3f} % of U H)")
-        st.check(abs(q_plane - U * H) <= a.fluxTolerance * U * H,
-                 f"flux through the middle plane = U H within {100 * a.fluxTolerance:g} %")
+        st.check(abs(q_plane - U * H) <= a.planeTolerance * U * H,
+                 f"flux through the middle plane = U H within {100 * a.planeTolerance:g} %")
 
     # mass balance at every write time, and the last state's particles
     cons = os.path.join(case, "postProcessing", "conservation")
