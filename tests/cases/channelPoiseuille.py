@@ -112,18 +112,18 @@ def main():
     st.check(abs(q_out - q_in) <= a.fluxTolerance * q_in, f"flux in = out within {100 * a.fluxTolerance:g} %")
     st.check(abs(q_in - U * H) <= a.fluxTolerance * U * H, f"flux in = U H within {100 * a.fluxTolerance:g} %")
     plane = os.path.join(case, "postProcessing", "midPlane")
-    if os.path.isdir(plane):
-        t, q = table(os.path.join(plane, sorted(os.listdir(plane), key=float)[0], "flux.dat"), "flux")
-        q_plane = q[t >= t_from - 1e-9].mean()
-        print(f"flux through the plane x = 2.5 H, mean over t >= {t_from:g} s: {q_plane:.6g} m^2/s "
-              f"({100 * (q_plane / (U * H) - 1):+.3f} % of U H)")
-        st.check(abs(q_plane - U * H) <= a.planeTolerance * U * H,
-                 f"flux through the middle plane = U H within {100 * a.planeTolerance:g} %")
+    t, q = table(os.path.join(plane, sorted(os.listdir(plane), key=float)[0], "flux.dat"), "flux")
+    q_plane = q[t >= t_from - 1e-9].mean()
+    print(f"flux through the plane x = 2.5 H, mean over t >= {t_from:g} s: {q_plane:.6g} m^2/s "
+          f"({100 * (q_plane / (U * H) - 1):+.3f} % of U H)")
+    st.check(abs(q_plane - U * H) <= a.planeTolerance * U * H,
+             f"flux through the middle plane = U H within {100 * a.planeTolerance:g} %")
 
     # mass balance at every write time, and the last state's particles
     cons = os.path.join(case, "postProcessing", "conservation")
-    fluid_mass = dict(zip(*table(os.path.join(cons, sorted(os.listdir(cons), key=float)[0], "conservation.dat"),
-                                 "fluidMass")))
+    cons = os.path.join(cons, sorted(os.listdir(cons), key=float)[0], "conservation.dat")
+    t_rows, mass = table(cons, "fluidMass")
+    fluid_mass = dict(zip(t_rows, mass))
     last = st.read_vtp(os.path.join(case, times[-1][1], "particles.vtp"))
     m = float(last["field:mass"][0])
     m0 = fluid_mass[min(fluid_mass)]
@@ -138,15 +138,10 @@ def main():
     print(f"mass balance: largest |fluid mass - (initial + (released - captured - removed) m)| / initial "
           f"= {worst_balance:.2g} over the {matched} write times with a conservation row")
     st.check(matched >= 3 and worst_balance <= 1e-11, "mass balance closes to round-off")
-    if os.path.isdir(os.path.join(case, "postProcessing", "conservation")):
-        cons = os.path.join(case, "postProcessing", "conservation")
-        path = os.path.join(cons, sorted(os.listdir(cons), key=float)[0], "conservation.dat")
-        t, mass = table(path, "fluidMass")
-        if "releasedMass" in columns_of(path):
-            inflow, outflow, lost = (table(path, c)[1] for c in ("releasedMass", "capturedMass", "removedMass"))
-            row_balance = np.abs(mass - (mass[0] + inflow - outflow - lost)).max() / mass[0]
-            print(f"mass balance at every conservation row ({len(t)}): largest relative {row_balance:.2g}")
-            st.check(row_balance <= 1e-11, "mass balance closes to round-off at every conservation row")
+    inflow, outflow, lost = (table(cons, c)[1] for c in ("releasedMass", "capturedMass", "removedMass"))
+    row_balance = np.abs(mass - (mass[0] + inflow - outflow - lost)).max() / mass[0]
+    print(f"mass balance at every conservation row ({len(t_rows)}): largest relative {row_balance:.2g}")
+    st.check(row_balance <= 1e-11, "mass balance closes to round-off at every conservation row")
     fluid = last["type"] == 0
     n_expected = round(m0 / m) + s2["released"] - s2["captured"] - s2["removedCount"]
     ids = last["id"]
