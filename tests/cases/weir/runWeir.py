@@ -1,0 +1,87 @@
+#!/usr/bin/python3
+"""Regression test of the weir tutorial at a reduced size (ctest regression.weir; the
+tutorial's full size: long.weir). See README.md here for the numbers.
+
+usage: runWeir.py TUTORIAL WORK --shizuku BIN --compare SHIZUKUCOMPARE [--threads N] [--full]
+
+Copies tutorials/weir to WORK/weir (or WORK/weirFull with --full); without --full its
+system/particlesDict is replaced by this folder's (the same flume at d0 = 1 cm) and
+endTime set to 4 s. Runs the solver, then the tutorial's weirDischarge.py over t >= 2.5 s
+(the tutorial's own window with --full), and checks:
+  - exit status 0;
+  - the discharge per unit width over the crest against the critical-flow relation,
+    |q / (sqrt(g) (2E/3)^(3/2)) - 1| <= 0.05;
+  - steady state: the discharge over the crest within 5 % of the inlet's release rate;
+  - the mass balance at every written time: N_fluid = N_fluid(0) + released - captured
+    - removed, exactly (whole particles), and the `conservation` file's fluidMass at
+    the last written time equal to that count times the particle mass to 1e-12.
+"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+import shizukutest as st  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+# The tutorial's geometry (crest x0 x1 P, the approach section, the planes over the crest).
+GEOMETRY = ["--crest", "0.35", "0.65", "0.05", "--upstream", "0.05", "0.15", "--planes", "0.45", "0.5", "0.55"]
+
+
+def conservation(path):
+    """The rows of a conservation.dat as {column: value} (vector columns skipped)."""
+    rows, names = [], []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("# columns:"):
+                names = line.split()[2:]
+            elif line.strip() and not line.startswith("#"):
+                values = re.findall(r"\([^)]*\)|\S+", line)
+                rows.append({k: float(v) for k, v in zip(names, values) if not v.startswith("(")})
+    return rows
+
+
+def main():
+    ap = st.case_arguments("tutorial")
+    ap.add_argument("--full", action="store_true")
+    a = ap.parse_args()
+    case = os.path.join(os.path.abspath(a.work), "weirFull" if a.full else "weir")
+    st.copy_case(a.tutorial, case)
+    start = "3"
+    if not a.full:
+        shutil.copy(os.path.join(HERE, "particlesDict"), os.path.join(case, "system", "particlesDict"))
+        st.set_key(os.path.join(case, "system", "controlDict"), "endTime", "4")
+        start = "2.5"
+    st.run_or_fail(a.shizuku, case, a.threads, "weir")
+    st.check(True, "weir: exit status 0")
+    rc = subprocess.call([os.path.join(a.tutorial, "weirDischarge.py"), case, "--from", start, "--no-plot"] + GEOMETRY)
+    if not st.check(rc == 0, f"weirDischarge.py exit status {rc}"):
+        return st.summary()
+    with open(os.path.join(case, "plots", "weirDischarge.json")) as f:
+        m = json.load(f)
+    ratio = m["q"] / m["qc"]
+    st.check(abs(ratio - 1) <= 0.05, f"q = {m['q']:.5f} m^2/s over the crest, sqrt(g)(2E/3)^1.5 = {m['qc']:.5f} "
+                                     f"(E = {m['E']:.5f} m): ratio {ratio:.4f} within 5 %")
+    st.check(abs(m["q"] / m["qInlet"] - 1) <= 0.05,
+             f"steady: q over the crest {m['q']:.5f} within 5 % of the inlet's {m['qInlet']:.5f} m^2/s")
+    st.check(m["balance"] == 0, f"N_fluid = N0 + released - captured - removed at every written time "
+                                f"(largest difference {m['balance']} particles)")
+    # the last written time: its fluid count against the conservation row at that time
+    t_last, name = st.time_dirs(case)[-1]
+    p = st.read_vtp(os.path.join(case, name, "particles.vtp"))
+    n, mass = int(np.sum(p["type"] == 0)), float(p["field:mass"][0])
+    rows = conservation(os.path.join(case, "postProcessing", "conservation", "0", "conservation.dat"))
+    row = min(rows, key=lambda r: abs(r["time"] - t_last))
+    if st.check(abs(row["time"] - t_last) < 1e-9, f"a conservation row at the last written time {t_last:g} s"):
+        st.check(abs(row["fluidMass"] - n * mass) <= 1e-12 * n * mass,
+                 f"fluidMass {row['fluidMass']:.12g} = N_fluid m = {n * mass:.12g} kg/m")
+    return st.summary()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
