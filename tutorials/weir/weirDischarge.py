@@ -13,10 +13,13 @@ transient (--from T0, default: the later half of the written times).
   - the approach section (--upstream XA XB, a few heads upstream of the weir's face):
     h1 the mean of its columns' levels, u1 the mean x-velocity of its fluid particles
     (every particle stands for the same volume, so this is the depth mean);
-  - q over the crest: the slab estimate sum V u_x / d0 over the fluid particles within
-    d0/2 of each plane x = const of --planes, averaged over the planes and times; also
-    the inlet's release rate (released particles per second times V, from the
-    `released` count in <time>/uniform/time), the discharge the inlet imposes;
+  - q over the crest: sum V u_x / (XB - XA) over the fluid particles in the stretch
+    XA <= x < XB of the crest (--over XA XB; the mean over that stretch of the slab
+    estimate at each plane x = const, which in a steady flow is q at every plane, with
+    the noise of single slabs averaged out), averaged over the times; also the inlet's
+    release rate and the outlet's capture rate (particles per second times V, from the
+    `released` and `captured` counts in <time>/uniform/time): in a steady state all three
+    agree;
   - the mass balance at every written time: N_fluid = N_fluid(0) + released - captured
     - removed (particle counts, exact integers).
 
@@ -26,7 +29,7 @@ scripts) and, unless --no-plot, plots/weirProfile.png
 the title). The last line printed is `q/qc = R` (qc = sqrt(g) (2E/3)^(3/2)).
 
 usage: weirDischarge.py CASE [--from T0] [--crest X0 X1 P] [--upstream XA XB]
-                             [--planes X ...] [--g G] [--no-plot]
+                             [--over XA XB] [--g G] [--no-plot]
 """
 import argparse
 import json
@@ -116,14 +119,15 @@ def measure(case, a):
         h1s.append(np.nanmean(surface_levels(x, y, cols, d0)))
         inside = (x >= a.upstream[0]) & (x < a.upstream[1])
         u1s.append(u[inside].mean())
-        qs.append(np.mean([V * u[np.abs(x - xp) < 0.5 * d0].sum() / d0 for xp in a.planes]))
+        qs.append(V * u[(x >= a.over[0]) & (x < a.over[1])].sum() / (a.over[1] - a.over[0]))
     (ta, na), (tb, nb) = window[0], window[-1]
-    q_inlet = V * (balance_counts(case, nb)[0] - balance_counts(case, na)[0]) / (tb - ta) if tb > ta else math.nan
+    counts = np.array(balance_counts(case, nb)) - np.array(balance_counts(case, na))
+    q_inlet, q_outlet = (V * counts[:2] / (tb - ta)) if tb > ta else (math.nan, math.nan)
     h1, u1, q = float(np.mean(h1s)), float(np.mean(u1s)), float(np.mean(qs))
     E = h1 + u1 ** 2 / (2 * a.g) - a.crest[2]
     qc = math.sqrt(a.g) * (2 * E / 3) ** 1.5
     return dict(d0=d0, V=V, n0=n0, window=(ta, tb), nTimes=len(window), edges=edges,
-                level=np.nanmean(np.array(levels), axis=0), h1=h1, u1=u1, q=q, qInlet=q_inlet,
+                level=np.nanmean(np.array(levels), axis=0), h1=h1, u1=u1, q=q, qInlet=float(q_inlet), qOutlet=float(q_outlet),
                 qSpread=(float(np.min(qs)), float(np.max(qs))), E=E, qc=qc,
                 yc=(q ** 2 / a.g) ** (1 / 3), balance=worst_balance, fluid=int(fluid.sum()))
 
@@ -136,9 +140,10 @@ def report(m, a):
         f"  depth h1             {m['h1']:.5f} m (highest particle + d0/2 per column)",
         f"  mean velocity u1     {m['u1']:.5f} m/s",
         f"  energy head E        {m['E']:.5f} m above the crest (P = {a.crest[2]:g} m)",
-        f"q over the crest       {m['q']:.5f} m^2/s (slab sum V u / d0 at x = {' '.join(f'{x:g}' for x in a.planes)} m;"
-        f" time means {m['qSpread'][0]:.5f} .. {m['qSpread'][1]:.5f})",
+        f"q over the crest       {m['q']:.5f} m^2/s (sum V u / (XB - XA) over x in [{a.over[0]:g}, {a.over[1]:g}] m;"
+        f" single times {m['qSpread'][0]:.5f} .. {m['qSpread'][1]:.5f})",
         f"q released by inlet    {m['qInlet']:.5f} m^2/s",
+        f"q captured by outlet   {m['qOutlet']:.5f} m^2/s",
         f"critical depth y_c     {m['yc']:.5f} m = {m['yc'] / m['d0']:.1f} d0",
         f"qc = sqrt(g)(2E/3)^1.5 {m['qc']:.5f} m^2/s",
         f"q/qc                   {m['q'] / m['qc']:.4f} (inlet: {m['qInlet'] / m['qc']:.4f})",
@@ -160,14 +165,13 @@ def plot(m, a, path):
     ax.hlines(P + m["yc"], x0, x1, colors="C3", linestyles="--", label=f"critical depth over the crest, y_c = {m['yc']:.4f} m")
     ax.hlines(P + m["E"], m["edges"][0], x1, colors="C2", linestyles=":", label=f"energy line upstream, E = {m['E']:.4f} m above the crest")
     ax.axvspan(a.upstream[0], a.upstream[1], color="C1", alpha=0.15, label="approach section (h1, u1)")
-    for xp in a.planes:
-        ax.axvline(xp, color="C4", lw=0.8, alpha=0.6)
+    ax.axvspan(a.over[0], a.over[1], color="C4", alpha=0.1, label="q measured over this stretch")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     ax.set_ylim(0, None)
     ax.set_title(f"Broad-crested weir: q = {m['q']:.4f} m$^2$/s over the crest, "
                  f"$\\sqrt{{g}}(2E/3)^{{3/2}}$ = {m['qc']:.4f} m$^2$/s, ratio {m['q'] / m['qc']:.3f}", fontsize=10)
-    ax.legend(fontsize=7, loc="upper right")
+    ax.legend(fontsize=7, loc="lower left")
     fig.tight_layout()
     fig.savefig(path, dpi=130)
 
@@ -178,7 +182,7 @@ def main():
     ap.add_argument("--from", dest="t0", type=float)
     ap.add_argument("--crest", type=float, nargs=3, default=[0.5, 0.9, 0.06], metavar=("X0", "X1", "P"))
     ap.add_argument("--upstream", type=float, nargs=2, default=[0.15, 0.25], metavar=("XA", "XB"))
-    ap.add_argument("--planes", type=float, nargs="+", default=[0.6, 0.65, 0.7, 0.75, 0.8])
+    ap.add_argument("--over", type=float, nargs=2, default=[0.4, 0.6], metavar=("XA", "XB"))
     ap.add_argument("--g", type=float, default=9.81)
     ap.add_argument("--no-plot", action="store_true")
     a = ap.parse_args()
