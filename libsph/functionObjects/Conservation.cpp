@@ -46,6 +46,8 @@ ConservationValues<D> Conservation<D>::compute(const FlowState<D>& s) {
   v.nominalVolume = t.count * m / s.rho0;
   v.fluidMass = t.count * m;
   v.removedMass = s.balance.removedMass;
+  v.releasedMass = double(s.balance.released) * m;
+  v.capturedMass = double(s.balance.captured) * m;
   v.kineticEnergy = t.kinetic;
   v.momentum = t.momentum;
   if constexpr (D == 2) v.angularMomentum[0] = t.angular[2];
@@ -54,7 +56,8 @@ ConservationValues<D> Conservation<D>::compute(const FlowState<D>& s) {
 }
 
 template <int D>
-void Conservation<D>::open(const FlowState<D>&, const RunInfo& info) {
+void Conservation<D>::open(const FlowState<D>& s, const RunInfo& info) {
+  openBoundaries_ = s.hasOpenBoundaries;
   this->file_.emplace(this->makeFile(info, "conservation.dat"));
   this->file_->comment(cat("conservation of the fluid particles (walls excluded), ", D, "D",
                      D == 2 ? ", per unit depth" : "", "\n",
@@ -62,11 +65,18 @@ void Conservation<D>::open(const FlowState<D>&, const RunInfo& info) {
                      "kineticEnergy = sum m|u|^2/2;\n",
                      "momentum = sum m u; angularMomentum = sum m r x u about the origin",
                      D == 2 ? " (z component)" : "", ";\n",
-                     "fluidMass = N_fluid m; removedMass: fluid removed through the domain's bounds since the start"));
-  this->file_->columns({"time", "volume", "nominalVolume", "kineticEnergy", "momentum", "angularMomentum", "fluidMass",
-                        "removedMass"},
-                 {"s", units::volume(D), units::volume(D), units::energy(D), units::momentum(D),
-                  units::angularMomentum(D), units::mass(D), units::mass(D)});
+                     "fluidMass = N_fluid m; removedMass: fluid removed through the domain's bounds since the start",
+                     openBoundaries_ ? ";\nreleasedMass, capturedMass: fluid inlets released and outlets captured since "
+                                       "the start" : ""));
+  std::vector<std::string> names = {"time", "volume", "nominalVolume", "kineticEnergy", "momentum",
+                                    "angularMomentum", "fluidMass", "removedMass"};
+  std::vector<std::string> unit = {"s", units::volume(D), units::volume(D), units::energy(D), units::momentum(D),
+                                   units::angularMomentum(D), units::mass(D), units::mass(D)};
+  if (openBoundaries_) {
+    names.insert(names.end(), {"releasedMass", "capturedMass"});
+    unit.insert(unit.end(), {units::mass(D), units::mass(D)});
+  }
+  this->file_->columns(names, unit);
 }
 
 template <int D>
@@ -78,6 +88,7 @@ void Conservation<D>::sample(const FlowState<D>& s, const RunInfo&) {
   if constexpr (D == 2) row += F::number(v.angularMomentum[0]);
   else row += F::vector<3>(v.angularMomentum);
   row += " " + F::number(v.fluidMass) + " " + F::number(v.removedMass);
+  if (openBoundaries_) row += " " + F::number(v.releasedMass) + " " + F::number(v.capturedMass);
   this->file_->row(row);
 }
 

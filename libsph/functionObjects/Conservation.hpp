@@ -9,8 +9,12 @@
 //   removedMass    = the mass of the fluid particles removed through the domain's bounds
 //                    since the start (FlowState::removedMass): fluidMass + removedMass is
 //                    the initial fluid mass to round-off
+//   releasedMass, capturedMass (cases with inlets or outlets): the mass inlets released
+//                    and outlets captured since the start (FlowState::balance);
+//                    fluidMass + removedMass - releasedMass + capturedMass is the initial
+//                    fluid mass to round-off
 // File conservation.dat: time, volume, nominalVolume, kineticEnergy, momentum, angularMomentum,
-// fluidMass, removedMass.
+// fluidMass, removedMass[, releasedMass, capturedMass].
 // Reads (controlDict functions/<name>): type conservation; writeControl; writeInterval.
 #pragma once
 #include "core/BlockReduce.hpp"
@@ -23,6 +27,7 @@ template <int D>
 struct ConservationValues {
   using Angular = Eigen::Matrix<double, D == 2 ? 1 : 3, 1>;  // z only in 2D
   double volume = 0, nominalVolume = 0, kineticEnergy = 0, fluidMass = 0, removedMass = 0;
+  double releasedMass = 0, capturedMass = 0;
   Vec<D> momentum = Vec<D>::Zero();
   Angular angularMomentum = Angular::Zero();
 };
@@ -36,6 +41,9 @@ class Conservation : public SampledFunctionObject<D> {
  protected:
   void open(const FlowState<D>& s, const RunInfo& info) override;
   void sample(const FlowState<D>& s, const RunInfo& info) override;
+
+ private:
+  bool openBoundaries_ = false;  // the released and captured columns
 };
 
 }  // namespace shizuku

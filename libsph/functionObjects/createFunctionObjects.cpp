@@ -1,10 +1,11 @@
 // The function-object factory (docs/design.md 1.3): one object per entry of the
 // controlDict `functions { <name> { type <type>; ... } }`, built only when listed.
-// Reads (controlDict): functions { <name> { type probes|densityError|conservation|fluidExtent|timing; ... } }
+// Reads (controlDict): functions { <name> { type probes|densityError|conservation|fluidExtent|flux|timing; ... } }
 #include "core/Parameter.hpp"
 #include "functionObjects/Conservation.hpp"
 #include "functionObjects/DensityError.hpp"
 #include "functionObjects/FluidExtent.hpp"
+#include "functionObjects/Flux.hpp"
 #include "functionObjects/FunctionObjectFactory.hpp"
 #include "functionObjects/Probes.hpp"
 #include "functionObjects/Timing.hpp"
@@ -13,7 +14,7 @@
 namespace shizuku {
 
 std::vector<std::string> functionObjectTypes() {
-  return {"probes", "densityError", "conservation", "fluidExtent", "timing"};
+  return {"probes", "densityError", "conservation", "fluidExtent", "flux", "timing"};
 }
 
 namespace {
@@ -30,6 +31,7 @@ std::unique_ptr<FunctionObject<D>> createFunctionObject(const std::string& name,
   if (type == "densityError") return std::make_unique<DensityError<D>>(name, dict);
   if (type == "conservation") return std::make_unique<Conservation<D>>(name, dict);
   if (type == "fluidExtent") return std::make_unique<FluidExtent<D>>(name, dict);
+  if (type == "flux") return std::make_unique<Flux<D>>(name, dict);
   return std::make_unique<Timing<D>>(name, dict);
 }
 
@@ -40,7 +42,7 @@ std::vector<std::unique_ptr<FunctionObject<D>>> createFunctionObjects(const Dict
   for (const auto& name : functions->keys()) {
     if (!functions->isDict(name))
       functions->error(name, "a function object is a dictionary { type <type>; ... } (types: probes densityError "
-                             "conservation fluidExtent timing)");
+                             "conservation fluidExtent flux timing)");
     if (name.find('/') != std::string::npos || name == "." || name == "..")
       functions->error(name, "a function-object name names a folder: no '/', '.' or '..'");
     list.push_back(createFunctionObject<D>(name, functions->subDict(name)));

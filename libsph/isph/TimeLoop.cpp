@@ -107,6 +107,7 @@ void TimeLoop<D>::start() {
   startInfo.caseDir = files_.dir;
   startInfo.startTimeName = startTimeName_;
   startInfo.timers = &timers_;
+  if (const auto* open = outflow_.openBoundaries()) startInfo.crossings = &open->crossings();
   step_.analyse();
   // The initial write comes first: if it fails, no function-object file has been opened (truncated).
   if (freshStart) writeTime("initial particles");
