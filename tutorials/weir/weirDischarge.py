@@ -16,7 +16,10 @@ transient (--from T0, default: the later half of the written times).
   - q over the crest: sum V u_x / (XB - XA) over the fluid particles in the stretch
     XA <= x < XB of the crest (--over XA XB; the mean over that stretch of the slab
     estimate at each plane x = const, which in a steady flow is q at every plane, with
-    the noise of single slabs averaged out), averaged over the times; also the inlet's
+    the noise of single slabs averaged out), averaged over the times; and the mean over
+    the window of the case's `flux` function object --flux NAME (default crest) when its
+    postProcessing/NAME/0/flux.dat exists (sampled far more often than the written
+    times; it is then the q compared with the relation); also the inlet's
     release rate and the outlet's capture rate (particles per second times V, from the
     `released` and `captured` counts in <time>/uniform/time): in a steady state all three
     agree;
@@ -29,7 +32,7 @@ scripts) and, unless --no-plot, plots/weirProfile.png
 the title). The last line printed is `q/qc = R` (qc = sqrt(g) (2E/3)^(3/2)).
 
 usage: weirDischarge.py CASE [--from T0] [--crest X0 X1 P] [--upstream XA XB]
-                             [--over XA XB] [--g G] [--no-plot]
+                             [--over XA XB] [--flux NAME] [--g G] [--no-plot]
 """
 import argparse
 import json
@@ -79,6 +82,22 @@ def balance_counts(case, name):
     return vals["released"], vals["captured"], vals["removedCount"]
 
 
+def flux_mean(path, ta, tb):
+    """The mean of the `flux` column of a flux.dat over ta <= time <= tb (nan without the file)."""
+    if not os.path.isfile(path):
+        return math.nan
+    names, rows = [], []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("# columns:"):
+                names = line.split()[2:]
+            elif line.strip() and not line.startswith("#"):
+                rows.append([float(v) for v in line.split()])
+    d = np.array(rows)
+    inside = (d[:, 0] >= ta - 1e-9) & (d[:, 0] <= tb + 1e-9)
+    return float(d[inside, names.index("flux")].mean()) if inside.any() else math.nan
+
+
 def surface_levels(x, y, edges, d0):
     """The level of each column [edges[k], edges[k+1]): its highest particle + d0/2 (nan if empty)."""
     k = np.digitize(x, edges) - 1
@@ -123,11 +142,13 @@ def measure(case, a):
     (ta, na), (tb, nb) = window[0], window[-1]
     counts = np.array(balance_counts(case, nb)) - np.array(balance_counts(case, na))
     q_inlet, q_outlet = (V * counts[:2] / (tb - ta)) if tb > ta else (math.nan, math.nan)
-    h1, u1, q = float(np.mean(h1s)), float(np.mean(u1s)), float(np.mean(qs))
+    h1, u1, q_particles = float(np.mean(h1s)), float(np.mean(u1s)), float(np.mean(qs))
+    q_flux = flux_mean(os.path.join(case, "postProcessing", a.flux, "0", "flux.dat"), ta, tb)
+    q = q_flux if math.isfinite(q_flux) else q_particles
     E = h1 + u1 ** 2 / (2 * a.g) - a.crest[2]
     qc = math.sqrt(a.g) * (2 * E / 3) ** 1.5
     return dict(d0=d0, V=V, n0=n0, window=(ta, tb), nTimes=len(window), edges=edges,
-                level=np.nanmean(np.array(levels), axis=0), h1=h1, u1=u1, q=q, qInlet=float(q_inlet), qOutlet=float(q_outlet),
+                level=np.nanmean(np.array(levels), axis=0), h1=h1, u1=u1, q=q, qParticles=q_particles, qFlux=q_flux, qInlet=float(q_inlet), qOutlet=float(q_outlet),
                 qSpread=(float(np.min(qs)), float(np.max(qs))), E=E, qc=qc,
                 yc=(q ** 2 / a.g) ** (1 / 3), balance=worst_balance, fluid=int(fluid.sum()))
 
@@ -140,13 +161,14 @@ def report(m, a):
         f"  depth h1             {m['h1']:.5f} m (highest particle + d0/2 per column)",
         f"  mean velocity u1     {m['u1']:.5f} m/s",
         f"  energy head E        {m['E']:.5f} m above the crest (P = {a.crest[2]:g} m)",
-        f"q over the crest       {m['q']:.5f} m^2/s (sum V u / (XB - XA) over x in [{a.over[0]:g}, {a.over[1]:g}] m;"
+        f"q over the crest       {m['qFlux']:.5f} m^2/s (function object '{a.flux}', mean over the window)",
+        f"  from the particles   {m['qParticles']:.5f} m^2/s (sum V u / (XB - XA) over x in [{a.over[0]:g}, {a.over[1]:g}] m;"
         f" single times {m['qSpread'][0]:.5f} .. {m['qSpread'][1]:.5f})",
         f"q released by inlet    {m['qInlet']:.5f} m^2/s",
         f"q captured by outlet   {m['qOutlet']:.5f} m^2/s",
         f"critical depth y_c     {m['yc']:.5f} m = {m['yc'] / m['d0']:.1f} d0",
         f"qc = sqrt(g)(2E/3)^1.5 {m['qc']:.5f} m^2/s",
-        f"q/qc                   {m['q'] / m['qc']:.4f} (inlet: {m['qInlet'] / m['qc']:.4f})",
+        f"q/qc                   {m['q'] / m['qc']:.4f} (q = {m['q']:.5f}; inlet: {m['qInlet'] / m['qc']:.4f})",
         f"mass balance           largest |N_fluid - (N0 + released - captured - removed)| = {m['balance']} particles",
     ]
     return "\n".join(lines)
@@ -183,6 +205,7 @@ def main():
     ap.add_argument("--crest", type=float, nargs=3, default=[0.5, 0.9, 0.06], metavar=("X0", "X1", "P"))
     ap.add_argument("--upstream", type=float, nargs=2, default=[0.15, 0.25], metavar=("XA", "XB"))
     ap.add_argument("--over", type=float, nargs=2, default=[0.4, 0.6], metavar=("XA", "XB"))
+    ap.add_argument("--flux", default="crest")
     ap.add_argument("--g", type=float, default=9.81)
     ap.add_argument("--no-plot", action="store_true")
     a = ap.parse_args()

@@ -73,8 +73,17 @@ def main():
                  f"steady: q {what} {m[key]:.5f} within 2 % of the inlet's {m['qInlet']:.5f} m^2/s")
     st.check(m["balance"] == 0, f"N_fluid = N0 + released - captured - removed at every written time "
                                 f"(largest difference {m['balance']} particles)")
-    # every written time: its fluid count times the particle mass against conservation's row
+    # conservation at every written time: fluidMass + capturedMass + removedMass - releasedMass
+    # is the initial fluid mass, and fluidMass is N_fluid m of the written particles
     rows = conservation(os.path.join(case, "postProcessing", "conservation", "0", "conservation.dat"))
+    # each column printed to 12 significant digits: each term rounded by up to 5e-12 of itself
+    m0 = rows[0]["fluidMass"]
+    worst_balance = max(abs(r["fluidMass"] + r["capturedMass"] + r["removedMass"] - r["releasedMass"] - m0)
+                        / (5e-12 * (r["fluidMass"] + r["capturedMass"] + r["removedMass"] + r["releasedMass"] + m0))
+                        for r in rows)
+    st.check(worst_balance <= 1, f"fluidMass + capturedMass + removedMass - releasedMass = initial fluid mass at "
+                                 f"{len(rows)} rows, within the rounding of 12 printed digits "
+                                 f"(largest difference {worst_balance:.2f} of that rounding)")
     worst, matched = 0.0, 0
     for t, name in st.time_dirs(case):
         p = st.read_vtp(os.path.join(case, name, "particles.vtp"))
