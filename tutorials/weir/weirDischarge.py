@@ -82,20 +82,25 @@ def balance_counts(case, name):
     return vals["released"], vals["captured"], vals["removedCount"]
 
 
-def flux_mean(path, ta, tb):
-    """The mean of the `flux` column of a flux.dat over ta <= time <= tb (nan without the file)."""
-    if not os.path.isfile(path):
-        return math.nan
-    names, rows = [], []
+def read_table(path):
+    """The rows of a postProcessing table as {column: value} (vector columns skipped)."""
+    rows, names = [], []
     with open(path) as f:
         for line in f:
             if line.startswith("# columns:"):
                 names = line.split()[2:]
             elif line.strip() and not line.startswith("#"):
-                rows.append([float(v) for v in line.split()])
-    d = np.array(rows)
-    inside = (d[:, 0] >= ta - 1e-9) & (d[:, 0] <= tb + 1e-9)
-    return float(d[inside, names.index("flux")].mean()) if inside.any() else math.nan
+                values = re.findall(r"\([^)]*\)|\S+", line)
+                rows.append({k: float(v) for k, v in zip(names, values) if not v.startswith("(")})
+    return rows
+
+
+def flux_mean(path, ta, tb):
+    """The mean of the `flux` column of a flux.dat over ta <= time <= tb (nan without the file)."""
+    if not os.path.isfile(path):
+        return math.nan
+    inside = [r["flux"] for r in read_table(path) if ta - 1e-9 <= r["time"] <= tb + 1e-9]
+    return float(np.mean(inside)) if inside else math.nan
 
 
 def surface_levels(x, y, edges, d0):

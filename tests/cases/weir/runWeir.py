@@ -19,7 +19,6 @@ endTime set to 4 s. Runs the solver, then the tutorial's weirDischarge.py over t
 """
 import json
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -32,19 +31,6 @@ import shizukutest as st  # noqa: E402
 HERE = os.path.dirname(os.path.abspath(__file__))
 # The tutorial's geometry (crest x0 x1 P, the approach section, the stretch of crest where q is taken).
 GEOMETRY = ["--crest", "0.35", "0.65", "0.05", "--upstream", "0.05", "0.15", "--over", "0.4", "0.6"]
-
-
-def conservation(path):
-    """The rows of a conservation.dat as {column: value} (vector columns skipped)."""
-    rows, names = [], []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("# columns:"):
-                names = line.split()[2:]
-            elif line.strip() and not line.startswith("#"):
-                values = re.findall(r"\([^)]*\)|\S+", line)
-                rows.append({k: float(v) for k, v in zip(names, values) if not v.startswith("(")})
-    return rows
 
 
 def main():
@@ -75,7 +61,8 @@ def main():
                                 f"(largest difference {m['balance']} particles)")
     # conservation at every written time: fluidMass + capturedMass + removedMass - releasedMass
     # is the initial fluid mass, and fluidMass is N_fluid m of the written particles
-    rows = conservation(os.path.join(case, "postProcessing", "conservation", "0", "conservation.dat"))
+    weir = st.load_module(os.path.join(a.tutorial, "weirDischarge.py"), "weirDischarge")
+    rows = weir.read_table(os.path.join(case, "postProcessing", "conservation", "0", "conservation.dat"))
     # each column printed to 12 significant digits: each term rounded by up to 5e-12 of itself
     m0 = rows[0]["fluidMass"]
     worst_balance = max(abs(r["fluidMass"] + r["capturedMass"] + r["removedMass"] - r["releasedMass"] - m0)
