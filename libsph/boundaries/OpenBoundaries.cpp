@@ -18,12 +18,16 @@ OpenBoundaries<D>::OpenBoundaries(std::vector<OpenBoundaryRegion<D>> regions, co
   for (const auto& b : regions_) {
     const char* kind = b.inlet ? "inlet" : "outlet";
     const bool faceAtMax = b.face == b.max[b.axis];
-    if (b.length() < support * (1 - 1e-9))
+    if (b.length() < support * (1 - 1e-9)) {
+      const double spacings = std::ceil(support / s.d0 - 1e-9);
+      Vec<D> longer = faceAtMax ? b.min : b.max;
+      longer[b.axis] = b.face + (faceAtMax ? -1 : 1) * spacings * s.d0;
       b.dict->error(faceAtMax ? "min" : "max",
                     cat(kind, " '", b.name, "' is ", fmt(b.length()), " m = ", fmt(b.length() / s.d0),
                         " spacings long along its direction; it must cover the kernel support 2h = ", fmt(support),
-                        " m (", std::ceil(support / s.d0 - 1e-9), " spacings), so that fluid at its face has all "
-                        "its neighbours"));
+                        " m (", spacings, " spacings), so that fluid at its face has all its neighbours: did you mean ",
+                        faceAtMax ? "min " : "max ", fmt<D>(longer), "?"));
+    }
     if (domain.bounded() && !(domain.contains(b.min) && domain.contains(b.max)))
       b.dict->error(domain.contains(b.min) ? "max" : "min",
                     cat(kind, " '", b.name, "' box ", fmt<D>(b.min), "-", fmt<D>(b.max), " reaches outside the domain ",

@@ -36,11 +36,44 @@ void readDirection(const Dictionary& r, OpenBoundaryRegion<D>& b) {
   for (int k = 0; k < D; ++k)
     if (d[k] != 0) { ++nonZero; axis = k; }
   if (nonZero == 0) r.error("direction", "direction " + fmt<D>(d) + " is zero: give the flow direction, an axis such as (1 0)");
-  if (nonZero > 1)
+  if (nonZero > 1) {
+    int big = 0;
+    for (int k = 1; k < D; ++k)
+      if (std::abs(d[k]) > std::abs(d[big])) big = k;
+    Vec<D> nearest = Vec<D>::Zero();
+    nearest[big] = d[big] > 0 ? 1 : -1;
     r.error("direction", "direction " + fmt<D>(d) + " is oblique: inlets and outlets are boxes whose direction is an axis (+-x, +-y" +
-                             std::string(D == 3 ? ", +-z)" : ")"));
+                             std::string(D == 3 ? ", +-z)" : ")") + "; did you mean direction " + fmt<D>(nearest) + "?");
+  }
   b.axis = axis;
   b.sign = d[axis] > 0 ? 1 : -1;
+}
+
+// A box beside the domain lies on one side of its centre along its direction; one that
+// spans the centre along it (an inlet at the left end given direction (0 1)) would
+// release into, or capture from, a side wall. The suggestion: the axis along which the
+// box lies furthest from the centre, pointing into the domain (an inlet) or out of it.
+template <int D>
+void checkNotSideways(const Dictionary& r, const OpenBoundaryRegion<D>& b, const Vec<D>& wallsCentre) {
+  const int k = b.axis;
+  if (wallsCentre[k] < b.min[k] || wallsCentre[k] > b.max[k]) return;
+  int best = -1;
+  double furthest = 0;
+  for (int j = 0; j < D; ++j) {
+    const double out = std::max(b.min[j] - wallsCentre[j], wallsCentre[j] - b.max[j]);
+    if (out > furthest) { furthest = out; best = j; }
+  }
+  const char* kind = b.inlet ? "inlet" : "outlet";
+  std::string fix;
+  if (best >= 0) {
+    Vec<D> d = Vec<D>::Zero();
+    d[best] = ((wallsCentre[best] > b.max[best]) == b.inlet) ? 1 : -1;
+    fix = ": did you mean direction " + fmt<D>(d) + "?";
+  }
+  r.error("direction", std::string(kind) + " '" + b.name + "': direction " + fmt<D>(b.direction()) +
+                           " runs along the domain's side, not " + (b.inlet ? "into" : "out of") +
+                           " it: the box spans the domain's centre (" + fmt(wallsCentre[k]) + " m) along " +
+                           std::string(1, "xyz"[k]) + ", so its face would meet a wall, not the fluid" + fix);
 }
 
 // The inlet's velocity keys, checked by evaluating them on the box's lattice at t = 0.
@@ -117,10 +150,12 @@ OpenBoundaryRegion<D> readOpenBoundaryRegion(const Dictionary& r, const std::str
   const bool faceAtMax = (b.sign > 0) == inlet;
   b.face = faceAtMax ? max[k] : min[k];
   b.farFace = faceAtMax ? min[k] : max[k];
+  checkNotSideways<D>(r, b, wallsCentre);
   const double centre = 0.5 * (min[k] + max[k]);
   const double towardWalls = b.sign * (wallsCentre[k] - centre);
   if (inlet ? towardWalls < 0 : towardWalls > 0) {
-    Vec<D> flipped = -b.direction();
+    Vec<D> flipped = Vec<D>::Zero();  // (no -0 in the suggestion)
+    flipped[k] = -b.sign;
     r.error("direction", std::string(inlet ? "inlet" : "outlet") + " '" + name + "': direction " + fmt<D>(b.direction()) +
                              " points " + (inlet ? "away from" : "into") + " the domain (its centre lies at " +
                              fmt(wallsCentre[k]) + " m along " + std::string(1, "xyz"[k]) + "); an " +

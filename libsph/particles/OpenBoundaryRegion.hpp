@@ -25,8 +25,9 @@
 // downstream end of a weir) with an empty one.
 //
 // Errors (InputError naming file, line and keyword): shape other than box, a zero or
-// oblique direction, an inlet whose direction points away from the walls' interior
-// (or an outlet's into it), a length along the direction that is not a whole number
+// oblique direction, a direction along which the box spans the walls' centre (sideways:
+// its face would meet a side wall), an inlet whose direction points away from the
+// walls' interior (or an outlet's into it), a length along the direction that is not a whole number
 // of spacings, fluid inside the box, a velocity type other than uniform or
 // expression, an expression that does not parse or is not finite at t = 0, keys of
 // the other kind (velocity on an outlet, pressure on an inlet).

@@ -6,12 +6,16 @@
 namespace shizuku {
 
 namespace {
-// "muParser: <message> in expression "<text>"", without muParser's trailing '.' and ' '.
+// "muParser: <message> in expression "<text>"", without muParser's trailing '.' and ' ';
+// a name muParser does not know gets the names it does.
 VelocityExpressionError failure(const mu::Parser::exception_type& err) {
   std::string m = err.GetMsg(), e = err.GetExpr();
   while (!m.empty() && (m.back() == '.' || m.back() == ' ')) m.pop_back();
   while (!e.empty() && e.back() == ' ') e.pop_back();
-  return VelocityExpressionError("muParser: " + m + " in expression \"" + e + "\"");
+  std::string known;
+  if (err.GetCode() == mu::ecUNASSIGNABLE_TOKEN)
+    known = ": '" + err.GetToken() + "' is not a variable; the expressions know x, y, z (m), t (s) and pi";
+  return VelocityExpressionError("muParser: " + m + " in expression \"" + e + "\"" + known);
 }
 }  // namespace
 
