@@ -80,6 +80,22 @@ def load_compare(path):
     return load_module(path, "shizukuCompare")
 
 
+# --- postProcessing tables -------------------------------------------------------------
+
+def read_table(path):
+    """The rows of a postProcessing table as {column: value}, by the names of its
+    `# columns:` line (vector columns, written "(x y)", are skipped)."""
+    rows, names = [], []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("# columns:"):
+                names = line.split()[2:]
+            elif line.strip() and not line.startswith("#"):
+                values = re.findall(r"\([^)]*\)|\S+", line)
+                rows.append({k: float(v) for k, v in zip(names, values) if not v.startswith("(")})
+    return rows
+
+
 # --- case dictionaries ------------------------------------------------------------------
 
 def find_key(text, key):
