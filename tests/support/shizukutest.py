@@ -84,16 +84,12 @@ def load_compare(path):
 
 def read_table(path):
     """The rows of a postProcessing table as {column: value}, by the names of its
-    `# columns:` line (vector columns, written "(x y)", are skipped)."""
-    rows, names = [], []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("# columns:"):
-                names = line.split()[2:]
-            elif line.strip() and not line.startswith("#"):
-                values = re.findall(r"\([^)]*\)|\S+", line)
-                rows.append({k: float(v) for k, v in zip(names, values) if not v.startswith("(")})
-    return rows
+    `# columns:` line (vector columns, written "(x y)", are skipped); the reader is
+    utilities/shizukuPost.py's, which shizukuPlot and shizukuCompare use."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "utilities"))
+    import shizukuPost
+    names, _, rows = shizukuPost.read_tokens(path)
+    return [{k: float(v) for k, v in zip(names, r) if not v.startswith("(")} for r in rows]
 
 
 # --- case dictionaries ------------------------------------------------------------------
