@@ -64,7 +64,10 @@ class IsphStep {
   // Whether the next step uses no solver state built in earlier steps (a lagged AMG
   // hierarchy), so that a run stopped now restarts bit for bit; and a request that it
   // uses none (docs/reliability.md, "Restart is exact").
-  bool nextStepStartsAfresh() const { return scheme_.ppe->solver().nextSolveStartsAfresh(); }
+  bool nextStepStartsAfresh() const {
+    const int reorder = scheme_.reorderInterval;
+    return scheme_.ppe->nextSolveStartsAfresh(s_.particles) || (reorder > 0 && s_.step > 0 && s_.step % reorder == 0);
+  }
   void startAfreshAtNextStep() { scheme_.ppe->startAfreshAtNextSolve(); }
   // The stages in execution order with their parameters and units, one per line.
   std::vector<std::string> describe() const;

@@ -2,6 +2,7 @@
 //   interior and vicinity fluid rows:  -<lap p>_i = -b_i   (SPH(2) Laplacian weights, sign flipped so
 //                                      the diagonal is positive)
 //   free-surface and splash particles: p = 0 (Dirichlet, eliminated)
+//   outlet particles: their prescribed pressure (Dirichlet, docs/boundaries.md)
 //   wall particles with fluid neighbours: the Adami row (docs/method.md 11 A)
 //   no Dirichlet particle at all (closed or fully periodic domain): one row pinned to p = 0.
 // Every particle has a row, in particle order, so the numbering of the system
@@ -14,6 +15,7 @@
 #pragma once
 #include "operators/FlowState.hpp"
 #include "linearSolvers/LinearSolver.hpp"
+#include <algorithm>
 
 namespace shizuku {
 
@@ -24,6 +26,13 @@ class PressureEquation {
   const LinearSolver& solver() const { return *solver_; }
   // The next solve rebuilds whatever the solver keeps from earlier steps (restart exactness).
   void startAfreshAtNextSolve() { solver_->startAfreshAtNextSolve(); }
+  // Whether the next solve will start afresh: the solver's own reuse cycle ends, or the
+  // particles (ids in order) differ from the last assembly's (reordered, released,
+  // captured or removed), which rebuilds as well.
+  bool nextSolveStartsAfresh(const ParticleSet<D>& P) const {
+    return solver_->nextSolveStartsAfresh() || ids_.size() != P.id.size() ||
+           !std::equal(ids_.begin(), ids_.end(), P.id.begin());
+  }
   // source[i] = b_i for fluid rows (rho/dt <div u*>_i plus stabilization terms).
   void assemble(const FlowState<D>& s, const std::vector<double>& source);
   // Solves and writes particles.pressure (p = 0 where not an unknown).

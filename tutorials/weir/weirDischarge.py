@@ -83,16 +83,16 @@ def balance_counts(case, name):
 
 
 def read_table(path):
-    """The rows of a postProcessing table as {column: value} (vector columns skipped)."""
-    rows, names = [], []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("# columns:"):
-                names = line.split()[2:]
-            elif line.strip() and not line.startswith("#"):
-                values = re.findall(r"\([^)]*\)|\S+", line)
-                rows.append({k: float(v) for k, v in zip(names, values) if not v.startswith("(")})
-    return rows
+    """The rows of a postProcessing table as {column: value} (vector columns skipped),
+    by shizukuPost.read_tokens, the reader shizukuPlot uses (found beside shizukuPlot on
+    the PATH, as the tutorial functions put it there)."""
+    import shutil
+    plot = shutil.which("shizukuPlot")
+    here = os.path.dirname(os.path.realpath(__file__))
+    sys.path[:0] = ([os.path.dirname(os.path.realpath(plot))] if plot else []) + [os.path.join(here, "..", "..", "utilities")]
+    import shizukuPost
+    names, _, rows = shizukuPost.read_tokens(path)
+    return [{k: float(v) for k, v in zip(names, r) if not v.startswith("(")} for r in rows]
 
 
 def flux_mean(path, ta, tb):
