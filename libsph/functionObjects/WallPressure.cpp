@@ -49,7 +49,10 @@ WallPressure<D>::WallPressure(const std::string& name, const Dictionary& dict, c
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
     dict.error("wall", cat("'", wallName, "' is not a wall region of system/particlesDict (",
-                           names.empty() ? std::string("the case has none") : "they are: " + list, ")",
+                           names.empty() ? std::string("none known: the case has none, or, in shizukuPostProcess, the walls "
+                                                         "are not read; sample the sensor during the run")
+                                         : "they are: " + list,
+                           ")",
                            near.empty() ? std::string() : cat("; did you mean '", near, "'?")));
   }
   wall_ = walls[std::size_t(it - names.begin())];
