@@ -30,8 +30,7 @@ class PressureEquation {
   // particles (ids in order) differ from the last assembly's (reordered, released,
   // captured or removed), which rebuilds as well.
   bool nextSolveStartsAfresh(const ParticleSet<D>& P) const {
-    return solver_->nextSolveStartsAfresh() || ids_.size() != P.id.size() ||
-           !std::equal(ids_.begin(), ids_.end(), P.id.begin());
+    return solver_->nextSolveStartsAfresh() || numberingChanged(P);
   }
   // source[i] = b_i for fluid rows (rho/dt <div u*>_i plus stabilization terms).
   void assemble(const FlowState<D>& s, const std::vector<double>& source);
@@ -46,6 +45,10 @@ class PressureEquation {
   long standardRows() const { return standardRows_; }
 
  private:
+  // The particles (ids in order) differ from those of the last assembly.
+  bool numberingChanged(const ParticleSet<D>& P) const {
+    return ids_.size() != P.id.size() || !std::equal(ids_.begin(), ids_.end(), P.id.begin());
+  }
   bool countRows(const FlowState<D>& s);
   void fillRows(const FlowState<D>& s, const std::vector<double>& source);
   std::unique_ptr<LinearSolver> solver_;
