@@ -54,7 +54,9 @@ MEASURE_TEXT = {
                       "so the effective side is L - d0; tests/cases/README.md)",
     "kineticEnergyDrift": "kinetic energy: max |E(t)/E(0) - 1| over omega t <= 1 (exactly conserved)",
     "angularMomentumDrift": "angular momentum: max |L(t)/L(0) - 1| over omega t <= 1 (exactly conserved)",
-    "volumeDrift": "fluid volume sum m/<rho>: max |V(t)/V(0) - 1| over the run (constant for incompressible flow)",
+    "volumeDrift": "fluid volume (conservation's fluidVolume: interior particles m/<rho>, the others m/rho0; "
+                   "sum m/<rho> in runs before 2026-12-02): max |V(t)/V(0) - 1| over the run (constant for "
+                   "incompressible flow)",
     "velocityL2": "velocity: L2 relative error of u at the four probes (y = H/8, H/4, H/2, 3H/4) against the "
                   "series solution, over every sample of 0 < t <= 2 s",
     "velocityMax": "velocity: max |u - u_exact| over the probes and times, divided by the steady centre-line "

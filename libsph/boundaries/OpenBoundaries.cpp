@@ -64,26 +64,28 @@ int OpenBoundaries<D>::regionOf(const Vec<D>& x, bool inlet) const {
   return best;
 }
 
+// Inlet r's velocity at x and t; an expression that fails or is not finite is a
+// numerical failure (exit 2, last good state).
+template <int D>
+Vec<D> OpenBoundaries<D>::inletVelocity(int r, const Vec<D>& x, double t) const {
+  Vec<D> u;
+  try {
+    u = (*velocity_[r])(x, t);
+  } catch (const VelocityExpressionError& e) {
+    throw NumericalError(cat("inlet '", regions_[r].name, "': ", e.what(), " at ", fmt<D>(x), " m, t = ", t, " s"));
+  }
+  if (!u.allFinite())
+    throw NumericalError(cat("inlet '", regions_[r].name, "': the velocity expressions give ", fmt<D>(u), " at ",
+                             fmt<D>(x), " m, t = ", t, " s"));
+  return u;
+}
+
 template <int D>
 void OpenBoundaries<D>::prescribe(FlowState<D>& s) {
   auto& P = s.particles;
   for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.isInlet(i)) {
-      const int r = regionOf(P.position[i], true);
-      Vec<D> u;
-      try {
-        u = (*velocity_[r])(P.position[i], s.time);
-      } catch (const VelocityExpressionError& e) {
-        throw NumericalError(cat("inlet '", regions_[r].name, "': ", e.what(), " at ", fmt<D>(P.position[i]),
-                                 " m, t = ", s.time, " s"));
-      }
-      if (!u.allFinite())
-        throw NumericalError(cat("inlet '", regions_[r].name, "': the velocity expressions give ", fmt<D>(u), " at ",
-                                 fmt<D>(P.position[i]), " m, t = ", s.time, " s"));
-      P.velocity[i] = u;
-    } else if (P.isOutlet(i)) {
-      P.pressure[i] = regions_[regionOf(P.position[i], false)].pressure;
-    }
+    if (P.isInlet(i)) P.velocity[i] = inletVelocity(regionOf(P.position[i], true), P.position[i], s.time);
+    else if (P.isOutlet(i)) P.pressure[i] = regions_[regionOf(P.position[i], false)].pressure;
   }
 }
 
@@ -100,12 +102,17 @@ bool OpenBoundaries<D>::afterStep(FlowState<D>& s) {
       P.position[i] += dt * P.velocity[i];
       const int r = regionOf(P.position[i], true);
       const auto& b = regions_[r];
-      if (b.pastFace(P.position[i]) <= 0) continue;
-      // Released: it becomes fluid; its replacement goes one buffer length upstream.
+      if (b.pastFace(P.position[i]) <= 0) {
+        P.velocity[i] = inletVelocity(r, P.position[i], s.time);
+        continue;
+      }
+      // Released: it becomes fluid (keeping its velocity); its replacement goes one buffer
+      // length upstream.
       P.type[i] = std::uint8_t(ParticleType::fluid);
       const std::size_t k = P.addCopy(i);
       P.type[k] = std::uint8_t(ParticleType::inlet);
       P.position[k][b.axis] -= b.sign * b.length();
+      P.velocity[k] = inletVelocity(r, P.position[k], s.time);
       P.id[k] = P.nextId++;
       remove_.push_back(0);
       ++crossings_[r].count;
@@ -120,6 +127,7 @@ bool OpenBoundaries<D>::afterStep(FlowState<D>& s) {
         const auto& b = regions_[r];
         if (b.inlet || b.pastFace(P.position[i]) <= 0 || !b.acrossInside(P.position[i], 0.5 * d0_)) continue;
         P.type[i] = std::uint8_t(ParticleType::outlet);
+        P.pressure[i] = b.pressure;
         ++crossings_[r].count;
         ++s.balance.captured;
         changed = true;
@@ -129,7 +137,6 @@ bool OpenBoundaries<D>::afterStep(FlowState<D>& s) {
     }
   }
   if (anyRemoved) P.removeMarked(remove_);
-  prescribe(s);
   return changed || anyRemoved;
 }
 

@@ -31,10 +31,12 @@ class OpenBoundaries {
   // must reach 2h) and the domain (it must lie inside): errors name the region's keys.
   OpenBoundaries(std::vector<OpenBoundaryRegion<D>> regions, const FlowState<D>& s, const Domain<D>& domain);
   ~OpenBoundaries();
-  // Inlet velocities u(x, s.time) and outlet pressures on the buffer particles.
+  // Inlet velocities u(x, s.time) and outlet pressures on the buffer particles (at the start;
+  // afterStep keeps them after each step).
   void prescribe(FlowState<D>& s);
-  // After a step (s.time is its end): buffers moved by s.dt, release,
-  // capture, removal past the far faces, then prescribe(). Returns whether particle
+  // After a step (s.time is its end), in one pass: buffers moved by s.dt, inlet
+  // velocities set at s.time, release, capture (at the outlet's pressure, which the
+  // pressure equation then keeps), removal past the far faces. Returns whether particle
   // types or the count changed (the caller refreshes the step's arrays).
   bool afterStep(FlowState<D>& s);
   const std::vector<OpenBoundaryRegion<D>>& regions() const { return regions_; }
@@ -44,6 +46,7 @@ class OpenBoundaries {
 
  private:
   int regionOf(const Vec<D>& x, bool inlet) const;
+  Vec<D> inletVelocity(int r, const Vec<D>& x, double t) const;
 
   std::vector<OpenBoundaryRegion<D>> regions_;
   std::vector<std::unique_ptr<InletVelocity<D>>> velocity_;  // per region; null for outlets

@@ -3,8 +3,8 @@
 // Grammar: factors separated by spaces or '*' multiply, '/' divides by the one
 // factor that follows it (so "m/s/s" = "m/s^2"), '^' takes an integer power,
 // parentheses group: "kg/(m s^2)". "1" is a neutral factor ("1/s"); "-" or an
-// empty unit is dimensionless. Known units: m cm mm s ms kg g Pa kPa rad
-// (rad is dimensionless). Reads no dictionary keys.
+// empty unit is dimensionless. Known units: m cm mm s ms kg g Pa kPa rad Hz
+// (rad is dimensionless, Hz is 1/s). Reads no dictionary keys.
 #include "core/Dictionary.hpp"
 #include <cctype>
 #include <cmath>
@@ -19,7 +19,7 @@ const BaseUnit kUnits[] = {
     {"m", 1.0, dim::length},      {"cm", 1e-2, dim::length},  {"mm", 1e-3, dim::length},
     {"s", 1.0, dim::time},        {"ms", 1e-3, dim::time},    {"kg", 1.0, dim::mass},
     {"g", 1e-3, dim::mass},       {"Pa", 1.0, dim::pressure}, {"kPa", 1e3, dim::pressure},
-    {"rad", 1.0, dim::none},
+    {"rad", 1.0, dim::none},       {"Hz", 1.0, dim::inverseTime},
 };
 
 class UnitParser {

@@ -6,11 +6,11 @@ namespace shizuku {
 namespace {
 template <int D>
 struct Sums {
-  double volume = 0, kinetic = 0, count = 0;
+  double volume = 0, fluidVolume = 0, kinetic = 0, count = 0;
   Vec<D> momentum = Vec<D>::Zero();
   Vec<3> angular = Vec<3>::Zero();
   Sums& operator+=(const Sums& o) {
-    volume += o.volume; kinetic += o.kinetic; count += o.count;
+    volume += o.volume; fluidVolume += o.fluidVolume; kinetic += o.kinetic; count += o.count;
     momentum += o.momentum; angular += o.angular;
     return *this;
   }
@@ -37,12 +37,15 @@ ConservationValues<D> Conservation<D>::compute(const FlowState<D>& s) {
     const Vec<D>& u = p.velocity[i];
     a.count += 1;
     a.volume += m / p.density[i];
+    // A truncated kernel sum is no compression: only interior particles count theirs.
+    a.fluidVolume += m / (p.surfaceClass(i) == SurfaceClass::interior ? p.density[i] : s.rho0);
     a.kinetic += 0.5 * m * u.squaredNorm();
     a.momentum += m * u;
     a.angular += m * lift<D>(p.position[i]).cross(lift<D>(u));
   });
   ConservationValues<D> v;
   v.volume = t.volume;
+  v.fluidVolume = t.fluidVolume;
   v.nominalVolume = t.count * m / s.rho0;
   v.fluidMass = t.count * m;
   v.removedMass = s.balance.removedMass;
@@ -62,6 +65,7 @@ void Conservation<D>::open(const FlowState<D>& s, const RunInfo& info) {
   this->file_->comment(cat("conservation of the fluid particles (walls excluded), ", D, "D",
                      D == 2 ? ", per unit depth" : "", "\n",
                      "volume = sum m/<rho>_i (eq. 18); nominalVolume = N_fluid m/rho0; "
+                     "fluidVolume = sum m/<rho>_i over interior particles + m/rho0 over the others;\n"
                      "kineticEnergy = sum m|u|^2/2;\n",
                      "momentum = sum m u; angularMomentum = sum m r x u about the origin",
                      D == 2 ? " (z component)" : "", ";\n",
@@ -69,9 +73,9 @@ void Conservation<D>::open(const FlowState<D>& s, const RunInfo& info) {
                      openBoundaries_ ? ";\nreleasedMass, capturedMass: fluid inlets released and outlets captured since "
                                        "the start" : ""));
   std::vector<std::string> names = {"time", "volume", "nominalVolume", "kineticEnergy", "momentum",
-                                    "angularMomentum", "fluidMass", "removedMass"};
+                                    "angularMomentum", "fluidMass", "removedMass", "fluidVolume"};
   std::vector<std::string> unit = {"s", units::volume(D), units::volume(D), units::energy(D), units::momentum(D),
-                                   units::angularMomentum(D), units::mass(D), units::mass(D)};
+                                   units::angularMomentum(D), units::mass(D), units::mass(D), units::volume(D)};
   if (openBoundaries_) {
     names.insert(names.end(), {"releasedMass", "capturedMass"});
     unit.insert(unit.end(), {units::mass(D), units::mass(D)});
@@ -87,7 +91,7 @@ void Conservation<D>::sample(const FlowState<D>& s, const RunInfo&) {
                     F::number(v.kineticEnergy) + " " + F::vector<D>(v.momentum) + " ";
   if constexpr (D == 2) row += F::number(v.angularMomentum[0]);
   else row += F::vector<3>(v.angularMomentum);
-  row += " " + F::number(v.fluidMass) + " " + F::number(v.removedMass);
+  row += " " + F::number(v.fluidMass) + " " + F::number(v.removedMass) + " " + F::number(v.fluidVolume);
   if (openBoundaries_) row += " " + F::number(v.releasedMass) + " " + F::number(v.capturedMass);
   this->file_->row(row);
 }

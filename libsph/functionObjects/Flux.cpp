@@ -38,7 +38,7 @@ Flux<D>::Flux(const std::string& name, const Dictionary& dict)
   normal_ = key::normal.read<D>(p);
   if (!(normal_.norm() > 0)) p.error("normal", "the normal is zero");
   normal_.normalize();
-  thickness_ = key::thickness.readOr(p, 0.0);
+  if (p.found("thickness")) thickness_ = key::thickness.read(p);  // else d0, known at the start
   if (p.found("min")) lo_ = key::lo.read<D>(p);
   if (p.found("max")) hi_ = key::hi.read<D>(p);
 }

@@ -7,6 +7,7 @@
 #include "core/Dictionary.hpp"
 #include "core/StageTimers.hpp"
 #include "operators/FlowState.hpp"
+#include "particles/WallBox.hpp"
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,8 +44,10 @@ class FunctionObject {
   virtual void end() {}
 };
 
-// Build the function objects of a `functions` dictionary (nullptr or empty: none).
+// Build the function objects of a `functions` dictionary (nullptr or empty: none);
+// `walls`: the case's wall regions (wallPressure sensors sit on their faces).
 template <int D>
-std::vector<std::unique_ptr<FunctionObject<D>>> createFunctionObjects(const Dictionary* functions);
+std::vector<std::unique_ptr<FunctionObject<D>>> createFunctionObjects(const Dictionary* functions,
+                                                                      const std::vector<WallBox<D>>& walls = {});
 
 }  // namespace shizuku

@@ -1,7 +1,7 @@
 // Building one function object by type name (docs/design.md 1.3), for the list
 // factory createFunctionObjects() and for shizukuPostProcess (which may name a
 // type with default settings instead of an entry of the controlDict).
-// Types: probes densityError conservation fluidExtent timing.
+// Types: probes densityError conservation fluidExtent flux wallPressure timing.
 // Reads (controlDict functions/<name>): type, then the keys of that type.
 #pragma once
 #include "functionObjects/FunctionObject.hpp"
@@ -10,8 +10,10 @@ namespace shizuku {
 
 std::vector<std::string> functionObjectTypes();
 
-// Build the object `name` from its dictionary (which holds `type`). Throws InputError.
+// Build the object `name` from its dictionary (which holds `type`); `walls`: the case's
+// wall regions (a wallPressure needs its wall's). Throws InputError.
 template <int D>
-std::unique_ptr<FunctionObject<D>> createFunctionObject(const std::string& name, const Dictionary& dict);
+std::unique_ptr<FunctionObject<D>> createFunctionObject(const std::string& name, const Dictionary& dict,
+                                                        const std::vector<WallBox<D>>& walls = {});
 
 }  // namespace shizuku

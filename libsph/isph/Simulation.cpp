@@ -33,7 +33,7 @@ Simulation<D>::Simulation(const std::string& caseDir, const SimulationOptions& o
                                              physics.nu, files_.sphSchemes, s_);
   step_ = std::make_unique<IsphStep<D>>(s_, std::move(scheme), std::move(effects), timers_);
   if (opt_.functionObjects && !opt_.postProcessing)
-    functionObjects_ = createFunctionObjects<D>(files_.controlDict.subDictPtr("functions"));
+    functionObjects_ = createFunctionObjects<D>(files_.controlDict.subDictPtr("functions"), walls);
   else if (const Dictionary* f = files_.controlDict.subDictPtr("functions"))
     f->markAllRead();
   files_.checkAllRead();

@@ -120,8 +120,7 @@ void TimeLoop<D>::start() {
 template <int D>
 bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, double wallStart, ControlDictWatch& watch) {
   writtenAtCurrentTime_ = false;
-  const int reorder = step_.scheme().reorderInterval;
-  if (reorder > 0 && s_.step > 0 && s_.step % reorder == 0) {
+  if (step_.reorderDue()) {
     step_.reorderParticles();
     step_.analyse();
   }

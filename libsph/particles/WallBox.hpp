@@ -22,15 +22,24 @@ struct WallBox {
   int layers = 0;
   double d0 = 0;
 
-  // Inside the layer region deeper than `depth` past the surface: within the outer box and
-  // more than `depth` outside the surface box across a closed face.
+  // Inside the layer region deeper than `depth` past the surface: within the outer box,
+  // more than `depth` outside the surface box across a closed face k, and more than
+  // `depth` inside the outer box along every other axis. The last condition keeps a
+  // particle that skirts the outside of a wall box's corner (an obstacle's, where the
+  // layers of two faces meet) from counting: its centre may come within d0/2 of the
+  // outer rows there as it may of the surface, while in a wall's thickness (across k) any
+  // depth counts.
   bool inLayers(const Vec<D>& x, double depth) const {
-    bool deep = false;
-    for (int k = 0; k < D; ++k) {
+    for (int k = 0; k < D; ++k)
       if (x[k] <= outerMin[k] || x[k] >= outerMax[k]) return false;
-      deep |= (!open[2 * k] && x[k] < min[k] - depth) || (!open[2 * k + 1] && x[k] > max[k] + depth);
+    for (int k = 0; k < D; ++k) {
+      if (!((!open[2 * k] && x[k] < min[k] - depth) || (!open[2 * k + 1] && x[k] > max[k] + depth))) continue;
+      bool within = true;
+      for (int j = 0; j < D; ++j)
+        if (j != k) within &= x[j] > outerMin[j] + depth && x[j] < outerMax[j] - depth;
+      if (within) return true;
     }
-    return deep;
+    return false;
   }
 };
 

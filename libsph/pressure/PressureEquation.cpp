@@ -13,7 +13,7 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
   // The particle order changed (cell reordering): a preconditioner kept from an
   // earlier step no longer matches the rows.
   const auto& P = s.particles;
-  if (ids_.size() != P.id.size() || !std::equal(ids_.begin(), ids_.end(), P.id.begin())) {
+  if (numberingChanged(P)) {
     ids_ = P.id;
     solver_->startAfreshAtNextSolve();
   }

@@ -5,6 +5,7 @@
 //                           extrapolation row of eq. 6b (FreeSurfaceRow.hpp); with
 //                           freeSurface { pressureCondition particles; } p = 0 on the particle
 //   splash particles (and free ones without a normal or a deeper neighbour): p = 0
+//   outlet particles: their prescribed pressure (Dirichlet, docs/boundaries.md)
 //   wall particles with fluid neighbours: the Adami row (docs/method.md 11 A)
 //   no Dirichlet particle at all (closed or fully periodic domain): one row pinned to p = 0.
 // Every particle has a row, in particle order, so the numbering of the system
@@ -17,6 +18,7 @@
 #pragma once
 #include "operators/FlowState.hpp"
 #include "linearSolvers/LinearSolver.hpp"
+#include <algorithm>
 
 namespace shizuku {
 
@@ -30,6 +32,12 @@ class PressureEquation {
   const LinearSolver& solver() const { return *solver_; }
   // The next solve rebuilds whatever the solver keeps from earlier steps (restart exactness).
   void startAfreshAtNextSolve() { solver_->startAfreshAtNextSolve(); }
+  // Whether the next solve will start afresh: the solver's own reuse cycle ends, or the
+  // particles (ids in order) differ from the last assembly's (reordered, released,
+  // captured or removed), which rebuilds as well.
+  bool nextSolveStartsAfresh(const ParticleSet<D>& P) const {
+    return solver_->nextSolveStartsAfresh() || numberingChanged(P);
+  }
   // source[i] = b_i for fluid rows (rho/dt <div u*>_i plus stabilization terms).
   void assemble(const FlowState<D>& s, const std::vector<double>& source);
   // Solves and writes particles.pressure (p = 0 where not an unknown).
@@ -43,6 +51,10 @@ class PressureEquation {
   long standardRows() const { return standardRows_; }
 
  private:
+  // The particles (ids in order) differ from those of the last assembly.
+  bool numberingChanged(const ParticleSet<D>& P) const {
+    return ids_.size() != P.id.size() || !std::equal(ids_.begin(), ids_.end(), P.id.begin());
+  }
   bool countRows(const FlowState<D>& s);
   void fillRows(const FlowState<D>& s, const std::vector<double>& source);
   void fillSurfaceRow(const FlowState<D>& s, long i, Index pos, int* col, double* val);

@@ -5,12 +5,22 @@ of that run.
 """
 import os
 import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "utilities"))
+import shizukuPost  # noqa: E402
 
 
 def read_setting(case, dictionary, key):
     """The number given for `key` in CASE/system/DICTIONARY (e.g. spacing, deltaT)."""
     with open(os.path.join(case, "system", dictionary)) as f:
         return float(re.search(rf"(?m)^\s*{key}\s+([^;]+);", f.read()).group(1))
+
+
+def read_rows(case, obj, name):
+    """The rows of CASE/postProcessing/OBJ/0/NAME as token lists (a vector "(x y)" one
+    token), read by utilities/shizukuPost.read_tokens."""
+    return shizukuPost.read_tokens(os.path.join(case, "postProcessing", obj, "0", name))[2]
 
 
 def write_history(case_folder, name, header, rows):

@@ -21,8 +21,10 @@ It asserts, each as its own line:
  1. the health guards did not fire: exit status 0, no 'numerical failure' in the log and
     no postProcessing/healthChecks folder (where a guard writes the offending particles);
  2. no NaN or Inf: every postProcessing file and every field of every time directory;
- 3. no particle lost: every time directory holds the same fluid particle ids, the
-    nominal fluid volume (N m/rho0) of conservation.dat never changes, and no fluid
+ 3. no particle lost: every time directory holds the same fluid particle ids, except those
+    the solver removed from the domain and logged in outflow/removed.dat (printed, not
+    failed), the nominal fluid volume (N m/rho0) of conservation.dat changes only with
+    those removals, and no fluid
     particle is out of the container: past the layers of a closed wall face, unless an
     earlier time directory saw it beyond an open face of that wall region (spray thrown
     over the top of a side wall and falling outside it has left an open container the
@@ -137,6 +139,14 @@ def main():
     # 2-4, 6 over the time directories
     times = st.time_dirs(case)
     check(len(times) >= 2, f"{name}: {len(times)} time directories")
+    # particles the solver removed from the domain (outflow/removed.dat): time, id
+    rem_t, rem_id = series.columns.get("outflow/removed.dat/id", (np.array([]), np.array([])))
+
+    def removed_by(t):
+        return rem_id[rem_t <= t + 1e-12].astype(np.int64)
+    if len(rem_id):
+        print(f"     {name}: {len(rem_id)} fluid particle(s) removed from the domain (outflow/removed.dat): "
+              f"ids {sorted(int(i) for i in rem_id)[:10]}")
     ids0, energy0, floor_pe, budget = None, None, None, None
     worst_wall = (0.0, None, None)
     worst_energy = (-math.inf, None)
@@ -158,7 +168,7 @@ def main():
         ids = np.sort(fids)
         if ids0 is None:
             ids0 = ids
-        elif not np.array_equal(ids, ids0):
+        elif not np.array_equal(ids, np.setdiff1d(ids0, removed_by(t))):
             lost.append(f"{tname}: {len(ids)} fluid particles, {len(ids0)} at the start")
         for wname, lo, hi, opened, thick in walls:
             axes = ["left", "right", "bottom", "top", "front", "back"]
@@ -225,8 +235,11 @@ def main():
                        f"{': ' + escaped[0] if escaped else ''}", "lost")
     nominal = [k for k in series.columns if k.endswith("/nominalVolume")]
     if nominal:
-        v = series.columns[nominal[0]][1]
-        check(np.all(v == v[0]), f"{name}: nominal fluid volume constant over {len(v)} samples", "lost")
+        tv, v = series.columns[nominal[0]]
+        n0 = len(ids0) if ids0 is not None else 1
+        left = np.array([n0 - len(removed_by(t)) for t in tv], dtype=float)
+        check(np.allclose(v * n0 / left, v[0], rtol=1e-9, atol=0),
+              f"{name}: nominal fluid volume constant over {len(v)} samples (less the removed particles')", "lost")
     check(worst_wall[0] <= wall_tol, f"{name}: no fluid particle inside a wall (deepest beyond a wall surface: "
                                      f"{worst_wall[0] / d0:.3g} d0{' at ' + str(worst_wall[1]) + ' ' + worst_wall[2] if worst_wall[1] else ''}"
                                      f"; allowed {wall_tol / d0:.3g} d0)", "walls")

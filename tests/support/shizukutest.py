@@ -80,6 +80,18 @@ def load_compare(path):
     return load_module(path, "shizukuCompare")
 
 
+# --- postProcessing tables -------------------------------------------------------------
+
+def read_table(path):
+    """The rows of a postProcessing table as {column: value}, by the names of its
+    `# columns:` line (vector columns, written "(x y)", are skipped); the reader is
+    utilities/shizukuPost.py's, which shizukuPlot and shizukuCompare use."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "utilities"))
+    import shizukuPost
+    names, _, rows = shizukuPost.read_tokens(path)
+    return [{k: float(v) for k, v in zip(names, r) if not v.startswith("(")} for r in rows]
+
+
 # --- case dictionaries ------------------------------------------------------------------
 
 def find_key(text, key):

@@ -13,7 +13,8 @@ usage: runTutorial.py TUTORIAL_DIR WORK_DIR --repo REPO --build BUILD [--steps N
 3. Checks the outputs are there and finite:
    - exit status 0, the solver log with no numerical failure;
    - a time directory for every step, each with a particles.vtp that VTK reads, with
-     finite positions, U, p and rhoN, and the same particles in every one; particles.pvd
+     finite positions, U, p and rhoN, and the same particles in every one (with inlets or
+     outlets, which add and remove particles: unique ids in every one); particles.pvd
      listing every time;
    - every postProcessing file parses, has rows and no nan or inf, except a probe value,
      which may be nan only where the point is outside the fluid: the kernel sum
@@ -170,6 +171,8 @@ def main():
     st.check(len(times) == a.steps + 1, f"{name}: {len(times)} time directories (expected {a.steps + 1})")
     st.check(abs(times[-1][0] - end) <= 1e-9 * max(1, end) if times else False, f"{name}: the last time is endTime")
     first = None
+    with open(os.path.join(case, "system", "particlesDict")) as f:
+        open_ends = re.search(r"\btype\s+(inlet|outlet)\s*;", strip_comments(f.read())) is not None
     states = {}
     for t, tname in times:
         p = st.read_vtp(os.path.join(case, tname, "particles.vtp"))
@@ -179,7 +182,9 @@ def main():
         st.check(finite and all(k in p for k in ("U", "p", "rhoN", "type", "id")),
                  f"{name}: {tname}: U, p, rhoN present and finite for {len(p['position'])} particles")
         ids = np.sort(p["id"])
-        if first is None:
+        if open_ends:
+            st.check(len(np.unique(ids)) == len(ids), f"{name}: {tname}: {len(ids)} unique ids")
+        elif first is None:
             first = ids
         else:
             st.check(np.array_equal(ids, first), f"{name}: {tname}: the same particles as at the start")

@@ -125,6 +125,30 @@ void checkLeaks() {
   px.hi.setConstant(1.1);
   det.find(fluidAt<D>({at<D>(0.01, 0.2)}), {at<D>(1.09, 0.2)}, px, leaks);
   BOOST_TEST(leaks.empty());
+
+  // An obstacle (a wall box on the floor, layers outside its surface, open bottom): water
+  // flowing over it skirts the outer corner of its layers. 0: just inside the outer box's
+  // corner region above and beside it (0.03 past both faces, less than d0/2 inside the
+  // outer box along x): no leak; 1: in its top layers, mid-face: a leak; 2: in its side
+  // layers: a leak.
+  WallBox<D> block = tank<D>();
+  block.name = "block";
+  block.min = at<D>(0.4, 0.0);
+  block.max = at<D>(0.6, 0.1);
+  if (D == 3) { block.min[2] = 0; block.max[2] = 0.2; }
+  block.open = {};
+  block.open[2] = true;  // -y (on the floor)
+  block.outerMin = block.min - Vec<D>::Constant(0.03);
+  block.outerMax = block.max + Vec<D>::Constant(0.03);
+  block.outerMin[1] = block.min[1];
+  const LeakDetector<D> obstacle({block});
+  const std::vector<Vec<D>> near = {at<D>(0.6299, 0.1299), at<D>(0.5, 0.115), at<D>(0.615, 0.05)};
+  obstacle.find(fluidAt<D>(near), near, noPeriodic, leaks);
+  BOOST_REQUIRE(leaks.size() == 2u);
+  BOOST_TEST(leaks[0].particle == 1);
+  BOOST_TEST(leaks[0].face == 3);
+  BOOST_TEST(leaks[1].particle == 2);
+  BOOST_TEST(leaks[1].face == 1);
 }
 
 template <int D>

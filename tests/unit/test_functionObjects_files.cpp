@@ -229,7 +229,8 @@ BOOST_AUTO_TEST_CASE(files_headers_rows_and_restart) {
 
   // conservation: runTime 0.25 -> t = 0, 0.3, 0.5, 0.8
   BOOST_TEST(columnsLine(pp + "cons/0/conservation.dat") ==
-             "# columns: time volume nominalVolume kineticEnergy momentum angularMomentum fluidMass removedMass");
+             "# columns: time volume nominalVolume kineticEnergy momentum angularMomentum fluidMass removedMass "
+             "fluidVolume");
   BOOST_TEST(readFile(pp + "cons/0/conservation.dat").find("m^2") != std::string::npos);
   auto cr = rows(pp + "cons/0/conservation.dat");
   BOOST_REQUIRE(cr.size() == 4);

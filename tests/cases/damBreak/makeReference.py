@@ -15,7 +15,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from referenceHistory import read_setting, write_history  # noqa: E402
+from referenceHistory import read_rows, read_setting, write_history  # noqa: E402
 
 A = 0.2  # column width [m]
 
@@ -24,14 +24,9 @@ def main():
     case = sys.argv[1]
     d0 = read_setting(case, "particlesDict", "spacing")
     dt = read_setting(case, "controlDict", "deltaT")
-    rows = []
-    with open(os.path.join(case, "postProcessing", "front", "0", "extent.dat")) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            # time (min_x min_y) (max_x max_y)
-            fields = line.replace("(", " ").replace(")", " ").split()
-            rows.append((float(fields[0]), float(fields[3]) + d0 / 2))
+    # time (min_x min_y) (max_x max_y)
+    rows = [(float(r[0]), float(r[2].strip("()").split()[0]) + d0 / 2)
+            for r in read_rows(case, "front", "extent.dat")]
     out = write_history(HERE, "frontHistory.dat", [
         "Dam break: surge front x_front = max_x + d0/2, from a run at",
         f"d0 = a/{A / d0:g} (d0 = {d0:g} m, dt = {dt:g} s), written by makeReference.py",

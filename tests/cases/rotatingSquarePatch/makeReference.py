@@ -15,7 +15,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from referenceHistory import read_setting, write_history  # noqa: E402
+from referenceHistory import read_rows, read_setting, write_history  # noqa: E402
 
 RHO, OMEGA, L = 1000.0, 1.0, 1.0
 
@@ -25,13 +25,7 @@ def main():
     d0 = read_setting(case, "particlesDict", "spacing")
     dt = read_setting(case, "controlDict", "deltaT")
     scale = RHO * OMEGA ** 2 * (L - d0) ** 2
-    rows = []
-    with open(os.path.join(case, "postProcessing", "centre", "0", "p")) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            t, p = (float(x) for x in line.split()[:2])
-            rows.append((t, p / scale))
+    rows = [(float(r[0]), float(r[1]) / scale) for r in read_rows(case, "centre", "p")]
     out = write_history(HERE, "centrePressure.dat", [
         "Rotating square patch: centre pressure / (rho omega^2 (L - d0)^2), from a run at",
         f"L/d0 = {L / d0:g} (d0 = {d0:g} m, dt = {dt:g} s), written by makeReference.py",

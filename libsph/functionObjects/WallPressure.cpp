@@ -1,0 +1,304 @@
+// Function object `wallPressure`: see WallPressure.hpp (docs/postprocessing.md).
+#include "functionObjects/WallPressure.hpp"
+#include "core/Parameter.hpp"
+#include "particles/WallLattice.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace shizuku {
+
+namespace key {
+namespace {
+const ParameterGroup sensor("system/controlDict: functions/<name> (type wallPressure)",
+                            "A pressure sensor on a face of a wall box: mean pressure, force and impulse.");
+const OptionParameter wall =
+    sensor.option("wall", {}, "the wall region (system/particlesDict) whose face holds the sensor").required();
+const VectorParameter centre =
+    sensor.vector("centre", dim::length, "the sensor's centre, on a closed face of the wall's surface (within d0/2)")
+        .required();
+const ScalarParameter size =
+    sensor.scalar("size", dim::length, "length of the segment (2D); side of the square or diameter of the disc (3D)")
+        .required().above(0);
+const OptionParameter shape = sensor.option("shape", {"square", "disc"}, "the sensor's shape in 3D (2D: a segment)")
+                                  .def("square");
+const ParameterGroup filter("system/controlDict: functions/<name>/filter (type wallPressure)",
+                            "Optional low-pass filter of the sensor's pressure, written as an extra column.");
+const OptionParameter filterType =
+    filter.option("type", {"lowPass"}, "first order: tau dy/dt + y = p, exact for p linear between steps").required();
+const ScalarParameter cutoff =
+    filter.scalar("cutoff", dim::inverseTime, "cut-off frequency fc = 1/(2 pi tau): gain 1/sqrt(2) (-3 dB)")
+        .required().above(0);
+}  // namespace
+}  // namespace key
+
+namespace {
+const char kAxis[] = "xyz";
+constexpr int kDiscRings = 32, kDiscRays = 64;  // polar quadrature of the disc
+}  // namespace
+
+template <int D>
+WallPressure<D>::WallPressure(const std::string& name, const Dictionary& dict, const std::vector<WallBox<D>>& walls)
+    : SampledFunctionObject<D>(name, "wallPressure", dict) {
+  const std::string wallName = dict.getWord(key::wall.keyword());
+  recordParameter(key::wall.info(), &dict, wallName, false);
+  std::vector<std::string> names;
+  for (const auto& w : walls) names.push_back(w.name);
+  const auto it = std::find(names.begin(), names.end(), wallName);
+  if (it == names.end()) {
+    const std::string near = closestMatch(wallName, names);
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    dict.error("wall", cat("'", wallName, "' is not a wall region of system/particlesDict (",
+                           names.empty() ? std::string("none known: the case has none, or, in shizukuPostProcess, the walls "
+                                                         "are not read; sample the sensor during the run")
+                                         : "they are: " + list,
+                           ")",
+                           near.empty() ? std::string() : cat("; did you mean '", near, "'?")));
+  }
+  wall_ = walls[std::size_t(it - names.begin())];
+  if (wall_.layers < 2)
+    dict.error("wall", cat("wall '", wallName, "' has ", wall_.layers, " layer(s); the sensor extrapolates from the "
+                           "first two layers to the face: give it layers 2 or more"));
+  size_ = key::size.read(dict);
+  if (D == 3) disc_ = key::shape.read(dict) == "disc";
+  else if (dict.found("shape")) dict.error("shape", "in 2D the sensor is a segment of length `size`; shape is for 3D");
+  chooseFace(dict, key::centre.read<D>(dict));
+  area_ = D == 2 ? size_ : (disc_ ? M_PI / 4 * size_ * size_ : size_ * size_);
+  buildTerms(dict);
+  if (const Dictionary* f = dict.subDictPtr("filter")) {
+    key::filterType.read(*f);
+    cutoff_ = key::cutoff.read(*f);
+    filter_.emplace(cutoff_);
+  }
+}
+
+// The closed face nearest to `c` within d0/2 whose extent holds c; the sensor must fit on it.
+template <int D>
+void WallPressure<D>::chooseFace(const Dictionary& dict, const Vec<D>& c) {
+  const double d0 = wall_.d0, tol = 1e-9 * d0;
+  double best = INFINITY;
+  std::string faces;
+  for (int a = 0; a < D; ++a)
+    for (int side = 0; side < 2; ++side) {
+      if (wall_.open[2 * a + side]) continue;
+      const double f = side ? wall_.max[a] : wall_.min[a];
+      faces += cat(faces.empty() ? "" : ", ", kAxis[a], " = ", formatNumber(f));
+      bool inside = true;
+      for (int t = 0; t < D; ++t)
+        if (t != a) inside = inside && c[t] >= wall_.min[t] - tol && c[t] <= wall_.max[t] + tol;
+      const double dist = std::abs(c[a] - f);
+      if (inside && dist <= 0.5 * d0 + tol && dist < best) {
+        best = dist;
+        axis_ = a;
+        side_ = side;
+      }
+    }
+  if (!(best < INFINITY))
+    dict.error("centre", cat(formatNumber<D>(c), " is not on a face of wall '", wall_.name,
+                             "': it must lie within d0/2 = ", formatNumber(0.5 * d0), " m of one of its closed faces (",
+                             faces.empty() ? std::string("none") : faces, ") inside the surface ",
+                             formatNumber<D>(wall_.min), "-", formatNumber<D>(wall_.max)));
+  centre_ = c;
+  centre_[axis_] = side_ ? wall_.max[axis_] : wall_.min[axis_];
+  for (int t = 0; t < D; ++t) {
+    if (t == axis_) continue;
+    if (centre_[t] - 0.5 * size_ < wall_.min[t] - tol || centre_[t] + 0.5 * size_ > wall_.max[t] + tol)
+      dict.error("size", cat(formatNumber(size_), " m: the sensor centred at ", kAxis[t], " = ", formatNumber(centre_[t]),
+                             " reaches beyond the face ", faceName(), " of wall '", wall_.name, "', which spans ",
+                             kAxis[t], " = ", formatNumber(wall_.min[t]), " .. ", formatNumber(wall_.max[t])));
+  }
+}
+
+template <int D>
+std::vector<std::pair<long, double>> WallPressure<D>::segmentWeights(const std::vector<double>& x, double a, double b) {
+  const long n = long(x.size());
+  std::vector<std::pair<long, double>> out;
+  if (n == 1) return {{0, 1.0}};
+  if (!(b > a)) {  // a point: the interpolant's value
+    if (a <= x[0]) return {{0, 1.0}};
+    if (a >= x[n - 1]) return {{n - 1, 1.0}};
+    const long k = long(std::upper_bound(x.begin(), x.end(), a) - x.begin()) - 1;
+    const double t = (a - x[k]) / (x[k + 1] - x[k]);
+    return {{k, 1 - t}, {k + 1, t}};
+  }
+  std::vector<double> w(x.size(), 0.0);
+  w[0] += std::max(0.0, std::min(b, x[0]) - a);           // constant below the first node
+  w[n - 1] += std::max(0.0, b - std::max(a, x[n - 1]));   // and above the last
+  for (long k = 0; k + 1 < n; ++k) {
+    const double l = std::max(a, x[k]), r = std::min(b, x[k + 1]);
+    if (!(r > l)) continue;
+    const double len = r - l, mid = 0.5 * (l + r), dx = x[k + 1] - x[k];
+    w[k] += len * (x[k + 1] - mid) / dx;
+    w[k + 1] += len * (mid - x[k]) / dx;
+  }
+  for (long k = 0; k < n; ++k)
+    if (w[k] != 0) out.emplace_back(k, w[k] / (b - a));
+  return out;
+}
+
+// The wall particles behind the sensor and their weights: the face value of each column
+// (3/2 p_1 - 1/2 p_2) times the column's share of the sensor's mean.
+template <int D>
+void WallPressure<D>::buildTerms(const Dictionary& dict) {
+  std::array<WallAxis, D> axes;
+  for (int k = 0; k < D; ++k) {
+    axes[k] = wallAxis(wall_.min[k], wall_.max[k], wall_.d0, wall_.layers, wall_.open[2 * k], wall_.open[2 * k + 1]);
+    axisNodes_.push_back(axes[k].x);
+  }
+  const WallAxis& n = axes[axis_];
+  const long layer1 = side_ ? n.innerEnd : n.innerBegin - 1, layer2 = side_ ? n.innerEnd + 1 : n.innerBegin - 2;
+  std::map<std::array<long, D>, double> columns;  // column (normal index 0) -> share
+  if (D == 2) {
+    const int t = 1 - axis_;
+    for (const auto& [i, w] : segmentWeights(axisNodes_[t], centre_[t] - 0.5 * size_, centre_[t] + 0.5 * size_)) {
+      std::array<long, D> c{};
+      c[t] = i;
+      columns[c] += w;
+    }
+  } else {
+    const int t1 = (axis_ + 1) % D, t2 = (axis_ + 2) % D;
+    const auto& x1 = axisNodes_[t1];
+    const auto& x2 = axisNodes_[t2];
+    auto add = [&](const std::vector<std::pair<long, double>>& w1, const std::vector<std::pair<long, double>>& w2,
+                   double scale) {
+      for (const auto& [i, a] : w1)
+        for (const auto& [j, b] : w2) {
+          std::array<long, D> c{};
+          c[t1] = i;
+          c[t2] = j;
+          columns[c] += scale * a * b;
+        }
+    };
+    if (!disc_) {
+      add(segmentWeights(x1, centre_[t1] - 0.5 * size_, centre_[t1] + 0.5 * size_),
+          segmentWeights(x2, centre_[t2] - 0.5 * size_, centre_[t2] + 0.5 * size_), 1.0);
+    } else {
+      // Midpoint rule in r (weight r dr) and theta: exact for a linear field by symmetry.
+      double total = 0;
+      for (int ir = 0; ir < kDiscRings; ++ir) total += (ir + 0.5) * kDiscRays;
+      for (int ir = 0; ir < kDiscRings; ++ir) {
+        const double r = 0.5 * size_ * (ir + 0.5) / kDiscRings;
+        for (int it = 0; it < kDiscRays; ++it) {
+          const double th = 2 * M_PI * (it + 0.5) / kDiscRays;
+          const double u = centre_[t1] + r * std::cos(th), v = centre_[t2] + r * std::sin(th);
+          add(segmentWeights(x1, u, u), segmentWeights(x2, v, v), (ir + 0.5) / total);
+        }
+      }
+    }
+  }
+  for (const auto& [c, w] : columns) {
+    if (w == 0) continue;
+    for (int layer = 0; layer < 2; ++layer) {
+      std::array<long, D> idx = c;
+      idx[axis_] = layer == 0 ? layer1 : layer2;
+      Term term;
+      for (int k = 0; k < D; ++k) term.position[k] = axisNodes_[k][std::size_t(idx[k])];
+      term.weight = layer == 0 ? 1.5 * w : -0.5 * w;
+      termOf_[idx] = terms_.size();
+      terms_.push_back(term);
+    }
+  }
+  if (terms_.empty()) dict.error("centre", "the sensor covers no wall particle");
+}
+
+// Finds each term's particle by its lattice position (walls never move).
+template <int D>
+void WallPressure<D>::locate(const FlowState<D>& s) {
+  const auto& P = s.particles;
+  const double tol = 1e-6 * wall_.d0;
+  std::size_t found = 0;
+  for (auto& t : terms_) t.id = -1;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!P.isWall(i)) continue;
+    std::array<long, D> idx{};
+    bool ok = true;
+    for (int k = 0; k < D && ok; ++k) {
+      const auto& x = axisNodes_[k];
+      const auto it = std::lower_bound(x.begin(), x.end(), P.position[i][k] - tol);
+      ok = it != x.end() && std::abs(*it - P.position[i][k]) < tol;
+      if (ok) idx[k] = long(it - x.begin());
+    }
+    if (!ok) continue;
+    const auto term = termOf_.find(idx);
+    if (term == termOf_.end() || terms_[term->second].id >= 0) continue;
+    terms_[term->second].index = i;
+    terms_[term->second].id = P.id[i];
+    ++found;
+  }
+  if (found != terms_.size())
+    throw InputError(cat("wallPressure '", this->name(), "': ", terms_.size() - found, " of the ", terms_.size(),
+                         " wall particles behind the sensor on face ", faceName(), " of wall '", wall_.name,
+                         "' are missing from the particles (they do not match system/particlesDict)"));
+}
+
+template <int D>
+double WallPressure<D>::pressure(const FlowState<D>& s) {
+  const auto& P = s.particles;
+  bool current = true;
+  for (const auto& t : terms_) current = current && t.id >= 0 && t.index < P.size() && P.id[t.index] == t.id;
+  if (!current) locate(s);  // first call, or the particles were reordered
+  double p = 0;
+  for (const auto& t : terms_) p += t.weight * P.pressure[t.index];
+  return p;
+}
+
+template <int D>
+void WallPressure<D>::execute(const FlowState<D>& s, const RunInfo& info) {
+  const double previousForce = force_;
+  pressure_ = pressure(s);
+  force_ = pressure_ * area_;
+  if (!started_) {
+    started_ = true;
+    impulse_ = 0;
+  } else if (s.time > lastTime_) {
+    impulse_ += 0.5 * (previousForce + force_) * (s.time - lastTime_);
+  }
+  lastTime_ = s.time;
+  if (filter_) filter_->update(s.time, pressure_);
+  SampledFunctionObject<D>::execute(s, info);
+}
+
+template <int D>
+std::string WallPressure<D>::faceName() const {
+  return cat(kAxis[axis_], " = ", formatNumber(side_ ? wall_.max[axis_] : wall_.min[axis_]));
+}
+
+template <int D>
+std::string WallPressure<D>::details() const {
+  const std::string shape = D == 2 ? "segment" : (disc_ ? "disc" : "square");
+  return cat(", wall '", wall_.name, "' face ", faceName(), ", ", shape, " ", formatNumber(size_), " m at ",
+             formatNumber<D>(centre_), ", ", terms_.size(), " wall particles",
+             filter_ ? cat(", low-pass ", formatNumber(cutoff_), " Hz") : std::string());
+}
+
+template <int D>
+void WallPressure<D>::open(const FlowState<D>& s, const RunInfo& info) {
+  locate(s);
+  this->file_.emplace(this->makeFile(info, "wallPressure.dat"));
+  const std::string shape = D == 2 ? "segment" : (disc_ ? "disc" : "square");
+  this->file_->comment(cat("mean pressure on a ", shape, " of size ", formatNumber(size_), " m at ",
+                           formatNumber<D>(centre_), " on face ", faceName(), " of wall '", wall_.name,
+                           "' (face value 3/2 p_1 - 1/2 p_2 of the first two wall layers, interpolated along the "
+                           "face); force = p x area ", formatNumber(area_), D == 2 ? " m (per unit depth)" : " m^2",
+                           "; impulse since the start time",
+                           filter_ ? cat("; p_lowPass: first-order low-pass, cut-off ", formatNumber(cutoff_), " Hz")
+                                   : std::string()));
+  const std::string forceUnit = D == 2 ? "N/m" : "N", impulseUnit = D == 2 ? "N*s/m" : "N*s";
+  if (filter_)
+    this->file_->columns({"time", "p", "p_lowPass", "force", "impulse"}, {"s", "Pa", "Pa", forceUnit, impulseUnit});
+  else
+    this->file_->columns({"time", "p", "force", "impulse"}, {"s", "Pa", forceUnit, impulseUnit});
+}
+
+template <int D>
+void WallPressure<D>::sample(const FlowState<D>& s, const RunInfo&) {
+  using F = PostProcessingFile;
+  std::string row = F::number(s.time) + " " + F::number(pressure_);
+  if (filter_) row += " " + F::number(filter_->output());
+  this->file_->row(row + " " + F::number(force_) + " " + F::number(impulse_));
+}
+
+template class WallPressure<2>;
+template class WallPressure<3>;
+
+}  // namespace shizuku

@@ -1,0 +1,83 @@
+// Function object `wallPressure` (docs/postprocessing.md, "wallPressure"): the mean
+// pressure on a sensor face of a named wall box, its force and impulse.
+//   The sensor lies on the face of wall `wall` on which `centre` lies (within d0/2 of a
+//   closed face of its surface): in 2D a segment of length `size` along the face, in 3D
+//   a square of side `size` (or `shape disc;`, a disc of diameter `size`).
+//   The face pressure at each wall column is extrapolated from the PPE's pressure of the
+//   first two wall layers (docs/method.md 11: the Adami rows carry the fluid pressure
+//   into the wall), which sit d0/2 and 3d0/2 behind the surface:
+//     p_face = p_1 + (p_1 - p_2)/2 = 3/2 p_1 - 1/2 p_2,
+//   exact for a pressure linear across the wall (hydrostatic, or any uniform
+//   acceleration). Along the face the column values are interpolated linearly (2D) or
+//   bilinearly (3D) between the columns, constant beyond the last column of an open
+//   edge, and the interpolant is averaged over the sensor exactly (segment, square: the
+//   hat functions' integrals) or by a polar quadrature (disc, 32 x 64 points). The
+//   reading is a fixed weighted sum of wall particles' pressures, so it is smooth in
+//   the sensor's position and size (a sensor narrower than d0 reads the interpolant's
+//   mean, not the nearest particle) and exact (to the solver's tolerance) on any linear
+//   pressure field, e.g. rho g (H - y_c) on a hydrostatic wall.
+//   Force F = p A (A = size in 2D, per unit depth: N/m; size^2 or pi size^2/4 in 3D: N),
+//   impulse = time integral of F since the start time (trapezoidal rule over every
+//   step, whatever writeControl), optional first-order low-pass filter of p
+//   (LowPassFilter.hpp) updated every step.
+// File wallPressure.dat: time, p, [p_lowPass], force, impulse.
+// Reads (controlDict functions/<name>): type wallPressure; wall; centre; size; shape;
+// filter { type lowPass; cutoff; }; writeControl; writeInterval.
+#pragma once
+#include "functionObjects/LowPassFilter.hpp"
+#include "functionObjects/SampledFunctionObject.hpp"
+#include "particles/WallBox.hpp"
+#include <array>
+#include <map>
+#include <optional>
+
+namespace shizuku {
+
+template <int D>
+class WallPressure : public SampledFunctionObject<D> {
+ public:
+  WallPressure(const std::string& name, const Dictionary& dict, const std::vector<WallBox<D>>& walls);
+  void execute(const FlowState<D>& s, const RunInfo& info) override;
+
+  // Mean of the linear interpolant of `values` at `nodes` (increasing; constant beyond
+  // the ends) over [a, b], as weights per node: (node index, weight), weights sum to 1.
+  static std::vector<std::pair<long, double>> segmentWeights(const std::vector<double>& nodes, double a, double b);
+  // The sensor's pressure in state `s` (Pa); finds the wall particles first if needed.
+  double pressure(const FlowState<D>& s);
+  double area() const { return area_; }
+  double force() const { return force_; }
+  double impulse() const { return impulse_; }
+  double filtered() const { return filter_ ? filter_->output() : pressure_; }
+
+ protected:
+  std::string details() const override;
+  void open(const FlowState<D>& s, const RunInfo& info) override;
+  void sample(const FlowState<D>& s, const RunInfo& info) override;
+
+ private:
+  struct Term {
+    Vec<D> position;      // the wall particle's lattice position
+    double weight = 0;    // its share of the reading
+    std::size_t index = 0;
+    std::int64_t id = -1;
+  };
+  void chooseFace(const Dictionary& dict, const Vec<D>& centre);
+  void buildTerms(const Dictionary& dict);
+  void locate(const FlowState<D>& s);
+  std::string faceName() const;
+
+  WallBox<D> wall_;
+  int axis_ = 0, side_ = 0;          // the face: normal axis, 0 low (min) or 1 high (max)
+  Vec<D> centre_ = Vec<D>::Zero();   // on the face
+  double size_ = 0, area_ = 0;
+  bool disc_ = false;
+  std::vector<Term> terms_;
+  std::map<std::array<long, D>, std::size_t> termOf_;  // lattice indices (x, y[, z]) -> term
+  std::vector<std::vector<double>> axisNodes_;        // per axis: the wall lattice coordinates
+  std::optional<LowPassFilter> filter_;
+  double cutoff_ = 0;
+  double pressure_ = 0, force_ = 0, impulse_ = 0, lastTime_ = 0;
+  bool started_ = false;
+};
+
+}  // namespace shizuku
