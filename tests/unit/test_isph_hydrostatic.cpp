@@ -206,10 +206,9 @@ BOOST_AUTO_TEST_CASE(still_tank_pressure_second_order_in_d0_2d) {
 }
 
 // In 3D the first step at three resolutions (0.12 m wide, 4, 6, 8 spacings; 3D tanks of whole and non-whole
-// spacings above): exact to round-off against rho g (H - y), H nominal. After 0.1 s of
-// the tutorial's shifting a tank 0.09 m wide read 0.54, 0.96, 0.25 % at d0 = 3, 2, 1.5 cm
-// (not second order: docs/method.md 4.4, open). With p = 0 on the particles the error is
-// rho g d0/2 (d0/(2H) relative: 5, 3.3, 2.5 %), which is what each check below would see.
+// spacings above): exact to round-off against rho g (H - y), H nominal. With p = 0 on the
+// particles the error is rho g d0/2 (d0/(2H) relative: 5, 3.3, 2.5 %), which is what each
+// check below would see.
 BOOST_AUTO_TEST_CASE(still_tank_first_step_three_resolutions_3d_and_the_old_condition) {
   const Tank t{0.12, 0.4, 0.3};
   for (double d0 : {0.03, 0.02, 0.015}) {
@@ -224,4 +223,23 @@ BOOST_AUTO_TEST_CASE(still_tank_first_step_three_resolutions_3d_and_the_old_cond
     BOOST_TEST_MESSAGE("2D d0 = " << d0 << ", p = 0 on the particles: " << err);
     BOOST_TEST(err == d0 / (2 * 0.3), boost::test_tools::tolerance(1e-6));
   }
+}
+
+// 3D after 0.1 s of the tutorial's shifting, a tank of whole spacings (0.12 m wide, 0.36 m
+// high, 0.3 m deep: 4, 6, 8 spacings across, 10, 15, 20 deep): measured 1.01e-3, 6.9e-4,
+// 4.8e-4 of rho g H at d0 = 3, 2, 1.5 cm, within the 0.5 % of issue 18 but first order
+// (1.06): the largest error is always at the four top corner particles (two walls
+// beside them), lifted about 0.01 d0 by the shifting while p = 0 stays d0/2 above them
+// (docs/method.md 4.4, open). Checked: the bound and that the error falls with d0.
+BOOST_AUTO_TEST_CASE(still_tank_pressure_after_shifting_3d) {
+  const Tank t{0.12, 0.36, 0.3};
+  std::vector<double> err;
+  for (double d0 : {0.03, 0.02, 0.015}) {
+    err.push_back(nominalDepthError<3>(t, d0, kTutorialSchemes, 50, 2e-3));
+    BOOST_TEST_MESSAGE("3D d0 = " << d0 << " after 0.1 s: " << err.back());
+    BOOST_TEST(err.back() <= 5e-3);
+  }
+  const double order = std::log(err[0] / err[2]) / std::log(2.0);
+  BOOST_TEST_MESSAGE("3D order 3 -> 1.5 cm: " << order);
+  BOOST_TEST(order >= 0.8);
 }
