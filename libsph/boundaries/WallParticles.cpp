@@ -1,4 +1,5 @@
-// Dummy wall particles: Shepard velocity and the Adami pressure row (docs/method.md 4.2, 11).
+// Dummy wall particles: Shepard velocity, the wall normals fluid particles see and the
+// Adami pressure row (docs/method.md 4.2, 11).
 #include "boundaries/WallParticles.hpp"
 
 namespace shizuku {
@@ -24,7 +25,29 @@ void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u, bool ou
 }
 
 template <int D>
-AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, std::size_t w) {
+void WallContacts<D>::update(const FlowState<D>& s) {
+  const auto& nl = s.neighbours;
+  const long n = long(s.size());
+  normal.resize(std::size_t(n));
+  lone.resize(std::size_t(n));
+#pragma omp parallel for schedule(static)
+  for (long f = 0; f < n; ++f) {
+    if (!s.isFluid(std::size_t(f))) continue;
+    Vec<D> sum = Vec<D>::Zero();
+    bool alone = true;
+    for (Index k = nl.begin(f); k < nl.end(f); ++k) {
+      const Index j = nl.j[k];
+      if (!s.isFluid(std::size_t(j))) sum += s.weights.w[k] * nl.rij[k];
+      else if (j != f) alone = false;
+    }
+    const double len = sum.norm();
+    normal[f] = len > 0 ? Vec<D>(sum / len) : Vec<D>::Zero();
+    lone[f] = alone;
+  }
+}
+
+template <int D>
+AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, const WallContacts<D>& contacts, std::size_t w) {
   const auto& nl = s.neighbours;
   AdamiRow row;
   double sum = 0;
@@ -33,8 +56,12 @@ AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, std::size_t w) {
   for (Index k = nl.begin(w); k < nl.end(w); ++k) {
     const Index f = nl.j[k];
     if (!s.isFluid(f)) continue;
+    const Vec<D>& n = contacts.normal[f];
+    const Vec<D> forces = (s.uStar[f] - s.particles.velocity[f]) * invDt;
+    const Vec<D> a = (contacts.lone[f] ? Vec<D>(n * n.dot(forces)) : forces) +
+                     n * (n.dot(s.particles.velocity[f] - Uw) * invDt);
     row.weightSum += s.weights.w[k];
-    sum += s.weights.w[k] * ((s.uStar[f] - Uw) * invDt).dot(nl.rij[k]);
+    sum += s.weights.w[k] * a.dot(nl.rij[k]);
   }
   if (row.weightSum > 0) row.rhs = s.rho0 * sum / row.weightSum;
   return row;
@@ -42,6 +69,8 @@ AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, std::size_t w) {
 
 template void shepardFluidVelocity<2>(const FlowState<2>&, std::vector<Vec<2>>&, bool);
 template void shepardFluidVelocity<3>(const FlowState<3>&, std::vector<Vec<3>>&, bool);
+template struct WallContacts<2>;
+template struct WallContacts<3>;
 template struct AdamiRow<2>;
 template struct AdamiRow<3>;
 

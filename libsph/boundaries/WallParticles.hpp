@@ -5,17 +5,19 @@
 //    water sees no artificial velocity jump at the wall. Outlet particles show the same
 //    average (the velocity's zero normal gradient at an outlet); inlet particles keep
 //    their prescribed velocity (docs/boundaries.md, "Inlets and outlets").
-//  - AdamiRow: the implicit wall-pressure row (docs/method.md 11 A), written with the
-//    predicted velocity so that it also carries the kinematic condition:
-//      p_w - sum_f (W_wf / sum W) p_f = rho sum_f W_wf a_f . r_wf / sum_f W_wf,
-//      a_f = (u*_f - U_w) / dt,   r_wf = r_w - r_f,
+//  - WallContacts: per fluid particle, the wall normal it sees, n_f = sum_w W r_fw /
+//    |sum_w W r_fw| over its wall neighbours (zero without any), and whether it is lone
+//    (no other fluid particle within its support).
+//  - AdamiRow: the implicit wall-pressure row (docs/method.md 11, eq. 11a):
+//      p_w - sum_f (W_wf / sum W) p_f = rho0 sum_f W_wf a_f . r_wf / sum_f W_wf,
+//      a_f = F_f + n_f (n_f . (u^n_f - U_w)) / dt,     F_f = (u*_f - u^n_f) / dt,
+//    r_wf = r_w - r_f, F_f the forces of the predictor per unit mass. The forces enter
+//    whole (Adami's hydrostatic extrapolation: still water stays exact), the velocity only
+//    along the wall normal (the velocity-Neumann term stops motion into or out of the wall
+//    in one step and leaves the motion along it alone). A lone particle's forces enter
+//    along n_f only: nothing below it carries its weight beside a vertical wall.
 //    p_w = 0 without fluid neighbours. Inlet particles take the same row with U_w their
-//    prescribed velocity: the pressure is extrapolated from the fluid (a Neumann
-//    condition carrying the hydrostatic and the inflow's acceleration term). For fluid at rest u*_f = g dt and this is
-//    Adami's hydrostatic row rho g . r_wf (so still water stays exact); fluid
-//    moving into the wall raises p_w by the pressure that stops it in one step,
-//    the velocity-Neumann idea of Morikawa et al. (docs/method.md 7). With the plain
-//    gravity row, fluid moving toward a wall (the dam-break toe) sank into it.
+//    prescribed velocity (the pressure extrapolated from the fluid).
 #pragma once
 #include "operators/FlowState.hpp"
 
@@ -26,11 +28,18 @@ template <int D>
 void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u, bool outletsOnly = false);
 
 template <int D>
+struct WallContacts {
+  std::vector<Vec<D>> normal;          // n_f (fluid particles; zero without wall neighbours)
+  std::vector<std::uint8_t> lone;      // 1: no other fluid particle within the support
+  void update(const FlowState<D>& s);  // sized to the particle count, capacity kept
+};
+
+template <int D>
 struct AdamiRow {
   double weightSum = 0;   // sum_f W_wf over fluid neighbours
-  double rhs = 0;         // rho sum_f W_wf a_f . r_wf / sum W
+  double rhs = 0;         // rho0 sum_f W_wf a_f . r_wf / sum W
   // Coefficient of fluid neighbour f (pair k of row w): -W_wf / sum W.
-  static AdamiRow compute(const FlowState<D>& s, std::size_t w);
+  static AdamiRow compute(const FlowState<D>& s, const WallContacts<D>& contacts, std::size_t w);
 };
 
 }  // namespace shizuku

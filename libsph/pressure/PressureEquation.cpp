@@ -18,6 +18,7 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
     solver_->startAfreshAtNextSolve();
   }
   pinned_ = !anyDirichlet && numUnknowns_ > 0;
+  if (hasWallRows_) contacts_.update(s);  // the wall normals the wall rows use (eq. 11a)
   fillRows(s, source);
 }
 
@@ -37,8 +38,8 @@ bool PressureEquation<D>::countRows(const FlowState<D>& s) {
     delta_.resize(n);
   }
 
-  long anyDirichlet = 0, m = 0;
-#pragma omp parallel for schedule(static) reduction(+ : anyDirichlet, m)
+  long anyDirichlet = 0, m = 0, wallRows = 0;
+#pragma omp parallel for schedule(static) reduction(+ : anyDirichlet, m, wallRows)
   for (long i = 0; i < n; ++i) {
     std::uint8_t isUnknown;
     if (s.isFluid(i)) {
@@ -56,6 +57,7 @@ bool PressureEquation<D>::countRows(const FlowState<D>& s) {
       isUnknown = false;
       for (Index k = nl.begin(i); k < nl.end(i); ++k)
         if (s.isFluid(nl.j[k])) { isUnknown = true; break; }
+      wallRows += isUnknown;
     }
     unknown_[i] = isUnknown;
     m += isUnknown != 0;
@@ -79,6 +81,7 @@ bool PressureEquation<D>::countRows(const FlowState<D>& s) {
   rowStart_[0] = 0;
   for (long i = 0; i < n; ++i) rowStart_[i + 1] += rowStart_[i];
   numUnknowns_ = m;
+  hasWallRows_ = wallRows > 0;
   return anyDirichlet > 0;
 }
 
@@ -142,7 +145,7 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
       rhs = -source[i];
       if (known != 0) rhs += known;  // outlet neighbours' prescribed pressure
     } else {
-      const AdamiRow<D> row = AdamiRow<D>::compute(s, i);
+      const AdamiRow<D> row = AdamiRow<D>::compute(s, contacts_, i);
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const Index j = nl.j[k];
         if (!unknown_[j] || !s.isFluid(j)) continue;

@@ -17,6 +17,7 @@
 // No allocation once the buffers have grown to the largest size seen.
 #pragma once
 #include "operators/FlowState.hpp"
+#include "boundaries/WallParticles.hpp"
 #include "linearSolvers/LinearSolver.hpp"
 #include <algorithm>
 
@@ -65,6 +66,8 @@ class PressureEquation {
   std::vector<double> delta_;          // per particle with an eq. 6b row: delta_i
   std::vector<Index> rowStart_;        // per row: start in the CSR arrays
   std::vector<std::int64_t> ids_;      // particle ids of the last assembly (detects reordering)
+  WallContacts<D> contacts_;           // wall normals of fluid particles (wall rows, eq. 11a)
+  bool hasWallRows_ = false;
   SparseMatrixR A_;
   long numUnknowns_ = 0;
   Eigen::VectorXd b_, x_;
