@@ -37,8 +37,8 @@ void WallContacts<D>::update(const FlowState<D>& s) {
     bool alone = true;
     for (Index k = nl.begin(f); k < nl.end(f); ++k) {
       const Index j = nl.j[k];
-      if (!s.isFluid(std::size_t(j))) sum += s.weights.w[k] * nl.rij[k];
-      else if (j != f) alone = false;
+      if (s.particles.isWall(std::size_t(j))) sum += s.weights.w[k] * nl.rij[k];
+      else if (s.isFluid(std::size_t(j)) && j != f) alone = false;
     }
     const double len = sum.norm();
     normal[f] = len > 0 ? Vec<D>(sum / len) : Vec<D>::Zero();
@@ -53,13 +53,15 @@ AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, const WallContacts<D>& c
   double sum = 0;
   const Vec<D>& Uw = s.particles.velocity[w];
   const double invDt = 1.0 / s.dt;
+  const bool inlet = s.particles.isInlet(w);
   for (Index k = nl.begin(w); k < nl.end(w); ++k) {
     const Index f = nl.j[k];
     if (!s.isFluid(f)) continue;
     const Vec<D>& n = contacts.normal[f];
     const Vec<D> forces = (s.uStar[f] - s.particles.velocity[f]) * invDt;
-    const Vec<D> a = (contacts.lone[f] ? Vec<D>(n * n.dot(forces)) : forces) +
-                     n * (n.dot(s.particles.velocity[f] - Uw) * invDt);
+    const Vec<D> a = inlet ? Vec<D>((s.uStar[f] - Uw) * invDt)
+                           : Vec<D>((contacts.lone[f] ? Vec<D>(n * n.dot(forces)) : forces) +
+                                    n * (n.dot(s.particles.velocity[f] - Uw) * invDt));
     row.weightSum += s.weights.w[k];
     sum += s.weights.w[k] * a.dot(nl.rij[k]);
   }

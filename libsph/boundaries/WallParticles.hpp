@@ -6,8 +6,9 @@
 //    average (the velocity's zero normal gradient at an outlet); inlet particles keep
 //    their prescribed velocity (docs/boundaries.md, "Inlets and outlets").
 //  - WallContacts: per fluid particle, the wall normal it sees, n_f = sum_w W r_fw /
-//    |sum_w W r_fw| over its wall neighbours (zero without any), and whether it is lone
-//    (no other fluid particle within its support).
+//    |sum_w W r_fw| over its wall neighbours (wall particles only, not inlet or outlet
+//    buffers; zero without any), and whether it is lone (no other fluid particle within
+//    its support).
 //  - AdamiRow: the implicit wall-pressure row (docs/method.md 11, eq. 11a):
 //      p_w - sum_f (W_wf / sum W) p_f = rho0 sum_f W_wf a_f . r_wf / sum_f W_wf,
 //      a_f = F_f + n_f (n_f . (u^n_f - U_w)) / dt,     F_f = (u*_f - u^n_f) / dt,
@@ -16,8 +17,9 @@
 //    along the wall normal (the velocity-Neumann term stops motion into or out of the wall
 //    in one step and leaves the motion along it alone). A lone particle's forces enter
 //    along n_f only: nothing below it carries its weight beside a vertical wall.
-//    p_w = 0 without fluid neighbours. Inlet particles take the same row with U_w their
-//    prescribed velocity (the pressure extrapolated from the fluid).
+//    p_w = 0 without fluid neighbours. Inlet particles take the row with the whole
+//    relative velocity, a_f = (u*_f - U_w)/dt, U_w their prescribed velocity: an inlet
+//    prescribes every component of the velocity (docs/boundaries.md).
 #pragma once
 #include "operators/FlowState.hpp"
 
