@@ -1,6 +1,7 @@
 // Function object `fluidExtent`: see FluidExtent.hpp (docs/design.md 1.3).
 #include "functionObjects/FluidExtent.hpp"
 #include "core/BlockReduce.hpp"
+#include "core/Parameter.hpp"
 #include <limits>
 
 namespace shizuku {
@@ -16,18 +17,40 @@ struct Box {
     return *this;
   }
 };
+
+namespace key {
+const ParameterGroup extent("system/controlDict: functions/<name> (type fluidExtent)",
+    "Bounding box of the fluid written by fluidExtent.");
+const SwitchParameter connectedOnly = extent.onOff("connectedOnly",
+    "only fluid particles with another fluid particle within 2h (lone particles left out)").def(false);
+}  // namespace key
+
+// Whether fluid particle i has another fluid particle within the support at its current
+// position (the neighbour list of the step's start, distances taken now).
+template <int D>
+bool connected(const FlowState<D>& s, std::size_t i) {
+  const auto& nl = s.neighbours;
+  const auto& x = s.particles.position;
+  const double support2 = 4 * s.h * s.h;
+  for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+    const auto j = std::size_t(nl.j[k]);
+    if (j != i && s.particles.isFluid(j) && (x[j] - x[i]).squaredNorm() < support2) return true;
+  }
+  return false;
+}
 }  // namespace
 
 template <int D>
 FluidExtent<D>::FluidExtent(const std::string& name, const Dictionary& dict)
-    : SampledFunctionObject<D>(name, "fluidExtent", dict) {}
+    : SampledFunctionObject<D>(name, "fluidExtent", dict), connectedOnly_(key::connectedOnly.read(dict)) {}
 
 template <int D>
-void FluidExtent<D>::compute(const FlowState<D>& s, Vec<D>& lo, Vec<D>& hi) {
+void FluidExtent<D>::compute(const FlowState<D>& s, Vec<D>& lo, Vec<D>& hi, bool connectedOnly) {
   const auto& p = s.particles;
+  const bool lists = connectedOnly && s.neighbours.numParticles() == s.size();
   thread_local std::vector<Box<D>> partial;
   const Box<D> b = blockReduce(p.size(), partial, [&](Box<D>& a, std::size_t i) {
-    if (!p.isFluid(i)) return;
+    if (!p.isFluid(i) || (lists && !connected(s, i))) return;
     a.lo = a.lo.cwiseMin(p.position[i]);
     a.hi = a.hi.cwiseMax(p.position[i]);
   });
@@ -41,15 +64,20 @@ void FluidExtent<D>::compute(const FlowState<D>& s, Vec<D>& lo, Vec<D>& hi) {
 
 template <int D>
 void FluidExtent<D>::open(const FlowState<D>&, const RunInfo& info) {
+  if (connectedOnly_ && info.postProcessing)
+    throw InputError(cat("function object '", this->name(), "': connectedOnly needs the solver's neighbour lists; "
+                         "shizukuPostProcess has none: sample it during the run"));
   this->file_.emplace(this->makeFile(info, "extent.dat"));
-  this->file_->comment("bounding box of the fluid particle positions (walls excluded)");
+  this->file_->comment(connectedOnly_ ? "bounding box of the fluid particle positions with another fluid particle "
+                                        "within 2h (walls and lone particles excluded)"
+                                      : "bounding box of the fluid particle positions (walls excluded)");
   this->file_->columns({"time", "min", "max"}, {"s", "m", "m"});
 }
 
 template <int D>
 void FluidExtent<D>::sample(const FlowState<D>& s, const RunInfo&) {
   Vec<D> lo, hi;
-  compute(s, lo, hi);
+  compute(s, lo, hi, connectedOnly_);
   using F = PostProcessingFile;
   this->file_->row(F::number(s.time) + " " + F::vector<D>(lo) + " " + F::vector<D>(hi));
 }

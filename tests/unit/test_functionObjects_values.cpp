@@ -124,6 +124,16 @@ BOOST_AUTO_TEST_CASE(fluid_extent) {
   Vec<3> lo3, hi3;
   FluidExtent<3>::compute(s3, lo3, hi3);
   for (int a = 0; a < 3; ++a) BOOST_TEST(close(hi3[a] - lo3[a], 2 * d0, 1e-15));
+  // connectedOnly: a particle 1.5 d0 beyond the lattice's right column (within 2h = 2.4 d0
+  // of it) counts, a lone one 5 m away does not; without the option both count.
+  {
+    auto t = lattice<2>(10, d0, c, {Vec<2>(c.x() + 6 * d0, c.y()), Vec<2>(c.x() + 5, c.y())});
+    for (std::size_t i = t.size() - 2; i < t.size(); ++i) t.particles.type[i] = std::uint8_t(ParticleType::fluid);
+    FluidExtent<2>::compute(t, lo, hi, true);
+    BOOST_TEST(close(hi.x(), c.x() + 6 * d0, 1e-15));
+    FluidExtent<2>::compute(t, lo, hi);
+    BOOST_TEST(close(hi.x(), c.x() + 5, 1e-15));
+  }
   // no fluid: nan
   for (auto& t : s.particles.type) t = std::uint8_t(ParticleType::wall);
   FluidExtent<2>::compute(s, lo, hi);
