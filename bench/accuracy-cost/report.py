@@ -61,7 +61,7 @@ MEASURE_TEXT = {
                   "series solution, over every sample of 0 < t <= 2 s",
     "velocityMax": "velocity: max |u - u_exact| over the probes and times, divided by the steady centre-line "
                    "speed 0.01 m/s",
-    "frontKO": "surge front x_front = max fluid x + d0/2 against Koshizuka & Oka (1996): RMS of the relative "
+    "frontKO": "surge front x_front = max fluid x + d0/2 (the body of water: fluidExtent connectedOnly, since 2026-12-02) against Koshizuka & Oka (1996): RMS of the relative "
                "error (x - x_KO)/x_KO over the experiment's times (t <= 0.31 s)",
     "frontKOBias": "the mean of the signed relative front error against Koshizuka & Oka (> 0: the computed "
                    "front leads; not plotted)",
