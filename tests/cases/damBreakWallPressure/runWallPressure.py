@@ -1,0 +1,73 @@
+#!/usr/bin/python3
+"""The Buchner (2002) dam-break impact against the far wall (tutorials/damBreakWallPressure):
+sensor P1 against the experiment (ctest regression.damBreakWallPressure at d0 = H/30,
+long.damBreakWallPressure at the tutorial's H/60). Numbers in the tutorial's README.md.
+
+usage: runWallPressure.py TUTORIAL WORK --shizuku BIN --compare SHIZUKUCOMPARE
+                          [--threads N] [--full]
+
+Copies the tutorial to WORK/damBreakWallPressure (WORK/damBreakWallPressureFull with
+--full), sets d0 = 2 cm without --full, runs it to t sqrt(g/H) = 7.48 and measures P1 with
+the tutorial's wallPressureMeasures.py. The checks are issue 18's, against the digitised
+P1 (TrixiParticles' set; the PySPH set agrees within its reading error):
+  - exit status 0, no particle lost;
+  - the first crossing of 0.3 rho g H within 3 % of t sqrt(g/H) = 2.616;
+  - the first and second peaks of the 100 Hz low-pass signal within 20 % of 0.687 and
+    0.877;
+  - the plateau's mean over 3.5 <= t sqrt(g/H) <= 5.5 within 10 % of 0.538;
+  - the plateau's noise (unfiltered, rms about the moving average over 0.1 in
+    t sqrt(g/H)) at most 0.02 rho g H.
+The method does not meet those bounds yet (README.md of the tutorial, "Against the
+experiment"): each is printed with its measured value as `issue 18 bound` and not asserted.
+What is asserted are the guards the resolution study supports (H/30, H/60; the wall row of
+docs/method.md 11 before 2026-12-02 fails the peak and noise guards):
+  - crossing within 6 % of 2.616 (measured -3.5, -4.0 %; old row +3.6, +0.4, +4.3 % at
+    H/30, H/60, H/120);
+  - filtered first peak at most 2 rho g H (1.41, 0.78; old row 7.2, 4.2, 6.6);
+  - plateau mean within 30 % of 0.538 (+18 % and +22 % at H/30 on 1 and 2 threads, -10 %
+    at H/60; old row +18, +15, +11 %);
+  - plateau noise at most 0.15 rho g H (0.086, 0.078; old row 0.36, 0.24, 0.30).
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "support"))
+import shizukutest as st  # noqa: E402
+
+EXPERIMENT = {"crossing": 2.616, "peak1": 0.687, "plateau": 0.538, "peak2": 0.877}
+ISSUE_BOUND = {"crossing": 0.03, "peak1": 0.20, "plateau": 0.10, "peak2": 0.20}
+ISSUE_NOISE = 0.02
+GUARD = {"crossing": 0.06, "plateau": 0.30}
+GUARD_PEAK1, GUARD_NOISE = 2.0, 0.15
+
+
+def main():
+    ap = st.case_arguments("tutorial")
+    ap.add_argument("--full", action="store_true")
+    a = ap.parse_args()
+    case = os.path.join(os.path.abspath(a.work), "damBreakWallPressureFull" if a.full else "damBreakWallPressure")
+    st.copy_case(a.tutorial, case)
+    if not a.full:
+        st.set_key(os.path.join(case, "system", "particlesDict"), "spacing", "2 [cm]")
+    st.run_or_fail(a.shizuku, case, a.threads, "damBreakWallPressure")
+    st.check(True, "damBreakWallPressure: exit status 0")
+    measures = st.load_module(os.path.join(a.tutorial, "wallPressureMeasures.py"), "wallPressureMeasures")
+    m = measures.measures(*measures.read_run(os.path.join(case, "postProcessing", "P1", "0", "wallPressure.dat")))
+    for key, ref in EXPERIMENT.items():
+        dev = m[key] / ref - 1
+        when = f" at t* = {m[key + '_t']:.3f}" if key + "_t" in m else ""
+        print(f"issue 18 bound: P1 {key} {m[key]:.3f}{when} against the "
+              f"experiment's {ref:.3f}: {100 * dev:+.1f} % (bound {100 * ISSUE_BOUND[key]:.0f} %: "
+              f"{'met' if abs(dev) <= ISSUE_BOUND[key] else 'not met'})")
+    print(f"issue 18 bound: P1 plateau noise {m['noise']:.4f} rho g H (bound {ISSUE_NOISE}: "
+          f"{'met' if m['noise'] <= ISSUE_NOISE else 'not met'})")
+    for key, tol in GUARD.items():
+        dev = m[key] / EXPERIMENT[key] - 1
+        st.check(abs(dev) <= tol, f"P1 {key} {m[key]:.3f} within {100 * tol:.0f} % of {EXPERIMENT[key]} ({100 * dev:+.1f} %)")
+    st.check(m["peak1"] <= GUARD_PEAK1, f"P1 first peak (100 Hz low-pass) {m['peak1']:.3f} at most {GUARD_PEAK1} rho g H")
+    st.check(m["noise"] <= GUARD_NOISE, f"P1 plateau noise {m['noise']:.4f} at most {GUARD_NOISE} rho g H")
+    return st.summary()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
