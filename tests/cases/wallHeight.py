@@ -15,12 +15,12 @@ The check: |h - h_exp| <= 0.01 m + 5 % at every write time with tau >= 0.56 (the
 range), and h no higher than the fluid's top 2 d0 to a/2 from the wall plus d0: no
 particle stays on the wall above the falling column.
 
-Measured (docs/method.md 11, the wall row, 2026-12-02, 1 thread, 20 s wall): largest
-|h - h_exp| 0.014 m at t = 0.26 s (6.2 % of 0.226 m, ratio 0.66 of the tolerance), within
-0.4 cm at t >= 0.30 s; the wall top at most 0.6 cm above the column's. With the wall
-row's kinematic term taking the whole relative velocity (before that date) a particle
-stayed on the wall at y = 0.37 m from t = 0.2 s to the end: at t = 0.34 s h = 0.375 m
-against 0.162 m measured; it fails from t = 0.08 s (wall top 1.2 cm above the column).
+Measured (docs/method.md 11, the wall row, eq. 11a; 2026-12-02, 2 threads, 15 s wall): largest
+|h - h_exp| 0.0127 m at t = 0.28 s (ratio 0.63 of the tolerance), within 0.8 cm at
+t >= 0.30 s. With the wall row's velocity term taking the whole relative velocity (before
+that date) a particle stayed on the wall at y = 0.37 m from t = 0.2 s to the end: at
+t = 0.34 s h = 0.375 m against 0.162 m measured; it fails from t = 0.08 s (wall top 1.2 cm
+above the column's).
 """
 import csv
 import os
