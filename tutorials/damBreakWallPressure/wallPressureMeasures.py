@@ -13,6 +13,8 @@ one) it reads postProcessing/P1/0/wallPressure.dat (raw column `p`, filtered col
   peak2      largest filtered p* for 5.5 <= t* <= 6.5, and its t*
   noise      rms of raw p* about its centred moving average over a window of 0.1 in t*,
              over the plateau 3.5 <= t* <= 5.5 (unfiltered)
+  interiorNoise  the same noise of the `interior` probe, inside the water 0.12 m from the
+             wall and 8 cm up (nan without it)
 The same measures on an experiment's digitised points (a few points per unit t*: the noise
 cannot be measured there and is printed as nan; peaks from the points themselves).
 --plot draws each case's raw and filtered P1 over the two digitised experiments in data/
@@ -74,6 +76,23 @@ def measures(t, p, pf, noise=True):
     return out
 
 
+def interior_noise(case, H, rho, g):
+    """Noise of the `interior` probe (raw p inside the water 0.12 m from the wall, 8 cm up), the same
+    measure as the sensor's over the plateau; nan when the case has no such probe."""
+    path = os.path.join(case, "postProcessing", "interior", "0", "p")
+    if not os.path.exists(path):
+        return float("nan")
+    _, _, tokens = shizukuPost.read_tokens(path)
+    rows = np.array([[float(x) for x in r] for r in tokens])
+    t, p = rows[:, 0] * np.sqrt(g / H), rows[:, 1] / (rho * g * H)
+    ok = np.isfinite(p)
+    t, p = t[ok], p[ok]
+    m = (t >= PLATEAU[0]) & (t <= PLATEAU[1])
+    if not m.any():
+        return float("nan")
+    return float(np.sqrt(np.mean((p[m] - moving_average(t, p, WINDOW)[m]) ** 2)))
+
+
 def plot(cases, labels, out, H, rho, g):
     import matplotlib
     matplotlib.use("Agg")
@@ -111,8 +130,9 @@ def main():
         d = d[np.argsort(d[:, 0], kind="stable")]
         rows = [("experiment", measures(d[:, 0], d[:, 1], d[:, 1], noise=False))]
     else:
-        rows = [(c, measures(*read_run(os.path.join(c, "postProcessing", "P1", "0", "wallPressure.dat"),
-                                       a.H, a.rho, a.g))) for c in a.cases]
+        rows = [(c, dict(measures(*read_run(os.path.join(c, "postProcessing", "P1", "0", "wallPressure.dat"),
+                                            a.H, a.rho, a.g)),
+                         interiorNoise=interior_noise(c, a.H, a.rho, a.g))) for c in a.cases]
     for name, res in rows:
         print(name + ": " + " ".join("%s %.4g" % kv for kv in res.items()))
     if a.plot:
