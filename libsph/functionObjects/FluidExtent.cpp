@@ -26,7 +26,7 @@ const SwitchParameter connectedOnly = extent.onOff("connectedOnly",
 }  // namespace key
 
 // Whether fluid particle i has another fluid particle within the support at its current
-// position (the neighbour list of the step's start, distances taken now).
+// position (the neighbour list of the step's start, minimum-image distances taken now).
 template <int D>
 bool connected(const FlowState<D>& s, std::size_t i) {
   const auto& nl = s.neighbours;
@@ -34,7 +34,7 @@ bool connected(const FlowState<D>& s, std::size_t i) {
   const double support2 = 4 * s.h * s.h;
   for (Index k = nl.begin(i); k < nl.end(i); ++k) {
     const auto j = std::size_t(nl.j[k]);
-    if (j != i && s.particles.isFluid(j) && (x[j] - x[i]).squaredNorm() < support2) return true;
+    if (j != i && s.particles.isFluid(j) && s.periodic.difference(x[i], x[j]).squaredNorm() < support2) return true;
   }
   return false;
 }
