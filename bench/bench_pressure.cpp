@@ -2,7 +2,7 @@
 // the warm-start guess) that a real run of a case produces, then solves the same
 // sequence with every candidate backend and thread count, timing each solve
 // (wall: best of `passes` passes; CPU: process clock, all threads, mean).
-// The case is run by Simulation::run (so particles are reordered by cell as in a
+// The case (2D or 3D, from its particlesDict) is run by Simulation::run (so particles are reordered by cell as in a
 // real run) with the case's own sphSolution; systems of steps > warmup are kept.
 // Usage:
 //   bench_pressure CASE WARMUP RECORD OUT.csv THREADS(1,2) PASSES LABEL=DICT [LABEL=DICT ...]
@@ -10,6 +10,7 @@
 // Appends one CSV row per (label, threads): case,unknowns,nnz,label,threads,
 // wallMs,cpuMs,iterations,maxResidual,failures.
 #include "core/Log.hpp"
+#include "isph/CaseFiles.hpp"
 #include "isph/Simulation.hpp"
 #include "linearSolvers/LinearSolver.hpp"
 #include <chrono>
@@ -81,8 +82,8 @@ int main(int argc, char** argv) {
     SimulationOptions opt;
     opt.functionObjects = false;
     opt.threads = threads.back();
-    Simulation<2> sim(caseDir, opt);
-    sim.run();
+    if (caseDimension(caseDir) == 3) Simulation<3>(caseDir, opt).run();
+    else Simulation<2>(caseDir, opt).run();
   }
   LinearSolver::setCreateHook({});
   if (recorded.empty()) { std::fprintf(stderr, "no system recorded\n"); return 1; }
