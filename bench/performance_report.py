@@ -200,7 +200,7 @@ def write(csvPath, mdPath, quick):
         bpp = 1024 * 1024 * float(worst["maxrssMB"]) / float(worst["total"])
         add(f"| 3D: <= 4 KB memory per particle | {f(bpp)} B (peak RSS / all particles, {worst['case']}) | "
             f"{'yes' if bpp <= 4096 else 'no'} | a 3D fluid particle has about 60 neighbours (2D: 13): the pair "
-            "arrays (index, r_ij, |r_ij|, W, the SPH2 gradient and Laplacian weights) and the PPE rows grow with them |")
+            "arrays (index, r_ij, abs r_ij, W, the SPH2 gradient and Laplacian weights) and the PPE rows grow with them |")
     add("")
 
     # ---------------------------------------------------------- 3D
@@ -244,6 +244,16 @@ def write(csvPath, mdPath, quick):
         add("path works in 2D too (21k dam break: 25 against 44 ms per solve on one thread, 17 ms on two), but it")
         add("changes 2D trajectories within the solver tolerance and one of them met an open defect")
         add("([solver.md](solver.md), a film between a floor and an outlet), so 2D stays on its validated path.")
+        add("")
+        add("What holds 3D back (measured 2026-12-02 on these runs): the PPE solve is 42-71 % of a step and does")
+        add("not gain from a second thread (100k: 330 ms per solve on one, 379 on two: the hybrid Gauss-Seidel's")
+        add("block-Jacobi coupling across the two row blocks adds iterations, 8 -> 9.6, and the hierarchy's setup")
+        add("runs on one thread); its share grows with N (the iterations with it), which is most of the 2x growth")
+        add("from 100k to 800k. The neighbour search and the SPH2 weights (9x9 moment matrices) are the next")
+        add("18 % and 14 % on one thread. Memory: about 60 pairs per fluid particle, each with its index, r_ij,")
+        add("its length, W, the SPH2 gradient and Laplacian weights (about 76 B), plus the PPE rows. Estimated,")
+        add("not measured: recomputing r_ij and its length from the positions saves 32 B a pair (about 1 KB a")
+        add("particle here), and keeping the symmetric arrays once per pair would halve them.")
         add("")
 
     # ---------------------------------------------------------- throughput
