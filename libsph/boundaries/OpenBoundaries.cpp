@@ -121,7 +121,18 @@ bool OpenBoundaries<D>::afterStep(FlowState<D>& s) {
     } else if (P.isOutlet(i)) {
       P.position[i] += dt * P.velocity[i];
       const int r = regionOf(P.position[i], false);
-      if (regions_[r].pastFarFace(P.position[i]) > 0) { remove_[i] = 1; anyRemoved = true; }
+      if (regions_[r].pastFarFace(P.position[i]) > 0) {
+        remove_[i] = 1;
+        anyRemoved = true;
+      } else if (regions_[r].pastFace(P.position[i]) < -0.5 * d0_) {
+        // Carried back upstream by a backflow (its velocity is its fluid neighbours'): it
+        // rejoins the fluid. Left an outlet particle, it would wander through the fluid
+        // and into the walls as a p = 0 point the walls do not hold.
+        P.type[i] = std::uint8_t(ParticleType::fluid);
+        --crossings_[r].count;
+        --s.balance.captured;
+        changed = true;
+      }
     } else if (P.isFluid(i)) {
       for (std::size_t r = 0; r < regions_.size(); ++r) {
         const auto& b = regions_[r];

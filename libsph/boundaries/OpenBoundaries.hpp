@@ -8,7 +8,9 @@
 //     the direction) becomes an outlet particle; outlet particles move with the velocity
 //     the step's corrector gave them (the Shepard average of their fluid neighbours' velocity,
 //     a zero normal gradient; kept without fluid neighbours: WallParticles.hpp), hold the
-//     outlet's prescribed pressure, and are removed past the buffer's far face.
+//     outlet's prescribed pressure, and are removed past the buffer's far face; one carried
+//     back upstream more than d0/2 past the face (a backflow) becomes fluid again and is
+//     uncounted from the captured ones.
 // Released and captured particles are counted per region (flux function object) and in
 // FlowState::balance. Inside the step, an inlet particle is a wall particle showing its
 // prescribed velocity, an outlet particle a Dirichlet pressure (OpenBoundaryRows.hpp,

@@ -24,9 +24,9 @@ constexpr double kDominance = 0.1;
 // |a_ij| >= kTheta sqrt(a_ii a_jj) and the untruncated prolongator, with which every
 // 2D case and comparison was validated. The wide-stencil path works in 2D too (21k
 // dam break: 25 against 44 ms per solve on one thread), but its iterates differ within
-// the solver tolerance, and the weir's trajectory then met an instability of a thin
-// film between the floor and the outlet (a particle at 35 m/s in two steps, with an
-// exact LU solve too: a defect of the method, docs/solver.md), not of the solver.
+// the solver tolerance, and the weir's trajectory then met a defect of the outlet
+// (outlet particles carried upstream into the floor by a backflow, now returned to the
+// fluid: docs/boundaries.md); to be revisited with the 2D cases' references rebuilt.
 constexpr double kTheta = 0.08;
 // A stencil is wide when its longest row has more than kWideRow entries: a 2D fluid
 // row has about 20 (support radius 2.4 d0), a 3D one about 60-80.
