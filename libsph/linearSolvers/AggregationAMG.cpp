@@ -69,8 +69,8 @@ int aggregate(const SparseMatrixR& A, const std::vector<double>& d, bool wide, s
   const int* outer = A.outerIndexPtr();
   const int* col = A.innerIndexPtr();
   const double* val = A.valuePtr();
-  std::vector<double> threshold(n, 0.0);  // |a_ij| at or above: strong
-  for (int i = 0; i < n; ++i) {
+  std::vector<double> threshold(wide ? n : 0, 0.0);  // wide stencils: |a_ij| at or above is strong
+  for (int i = 0; wide && i < n; ++i) {
     double largest = 0, mass = 0;
     for (int p = outer[i]; p < outer[i + 1]; ++p)
       if (col[p] != i) {
