@@ -45,11 +45,8 @@ void LeakDetector<D>::find(const ParticleSet<D>& p, const std::vector<Vec<D>>& p
       const WallBox<D>& b = walls_[std::size_t(w)];
       Leak l{Index(i), w, -1, false};
       if (b.inLayers(x, 0.5 * b.d0)) {
-        for (int f = 0; f < 2 * D && l.face < 0; ++f) {
-          const int k = f / 2;
-          if (!b.open[f] && (f % 2 ? x[k] > b.max[k] : x[k] < b.min[k])) l.face = f;
-        }
-      } else if (withPrevious) {
+        l.face = b.faceOf(x);
+      } else if (withPrevious && !b.solid) {
         // The minimum image of the previous position: a periodic wrap is no crossing.
         const Vec<D> from = x - periodic.difference(x, previous[std::size_t(i)]);
         for (int f = 0; f < 2 * D && l.face < 0; ++f)

@@ -4,7 +4,10 @@
 //   - crossed the layers of a closed wall face since the previous step (was on one side
 //     of them and is now on the other, through the face),
 // has leaked through the wall. O(N x walls) per step, no allocation once `leaks` has
-// its capacity. Open faces are not checked (fluid may leave through them).
+// its capacity. Open faces are not checked (fluid may leave through them). A solid wall
+// box (an obstacle) is checked for the first condition only: crossing it in one step
+// would take a move longer than its thickness, which the Courant limit (0.2 h) forbids
+// for any obstacle thicker than a spacing.
 // Reads no dictionary keys (the walls come from particlesDict through the generator).
 #pragma once
 #include "particles/NeighbourList.hpp"

@@ -110,26 +110,43 @@ void WallPressure<D>::chooseFace(const Dictionary& dict, const Vec<D>& c) {
 }
 
 template <int D>
-std::vector<std::pair<long, double>> WallPressure<D>::segmentWeights(const std::vector<double>& x, double a, double b) {
+std::vector<std::pair<long, double>> WallPressure<D>::segmentWeights(const std::vector<double>& x, double a, double b,
+                                                                      bool linearEnds) {
   const long n = long(x.size());
   std::vector<std::pair<long, double>> out;
   if (n == 1) return {{0, 1.0}};
+  // The interpolant's weights at y on the interval [x_k, x_k+1] (t outside [0, 1] beyond
+  // an end node: the end interval's line continued).
+  auto at = [&](long k, double y) {
+    const double t = (y - x[k]) / (x[k + 1] - x[k]);
+    return std::array<double, 2>{1 - t, t};
+  };
   if (!(b > a)) {  // a point: the interpolant's value
-    if (a <= x[0]) return {{0, 1.0}};
-    if (a >= x[n - 1]) return {{n - 1, 1.0}};
-    const long k = long(std::upper_bound(x.begin(), x.end(), a) - x.begin()) - 1;
-    const double t = (a - x[k]) / (x[k + 1] - x[k]);
-    return {{k, 1 - t}, {k + 1, t}};
+    const long k = a <= x[0] ? 0 : a >= x[n - 1] ? n - 2 : long(std::upper_bound(x.begin(), x.end(), a) - x.begin()) - 1;
+    if (!linearEnds && a <= x[0]) return {{0, 1.0}};
+    if (!linearEnds && a >= x[n - 1]) return {{n - 1, 1.0}};
+    const auto w = at(k, a);
+    return {{k, w[0]}, {k + 1, w[1]}};
   }
   std::vector<double> w(x.size(), 0.0);
-  w[0] += std::max(0.0, std::min(b, x[0]) - a);           // constant below the first node
-  w[n - 1] += std::max(0.0, b - std::max(a, x[n - 1]));   // and above the last
+  // Below the first node and above the last: constant, or the end interval's line.
+  const double below = std::max(0.0, std::min(b, x[0]) - a), above = std::max(0.0, b - std::max(a, x[n - 1]));
+  if (!linearEnds) {
+    w[0] += below;
+    w[n - 1] += above;
+  } else {
+    const auto lo = at(0, a + 0.5 * below), hi = at(n - 2, b - 0.5 * above);
+    w[0] += below * lo[0];
+    w[1] += below * lo[1];
+    w[n - 2] += above * hi[0];
+    w[n - 1] += above * hi[1];
+  }
   for (long k = 0; k + 1 < n; ++k) {
     const double l = std::max(a, x[k]), r = std::min(b, x[k + 1]);
     if (!(r > l)) continue;
-    const double len = r - l, mid = 0.5 * (l + r), dx = x[k + 1] - x[k];
-    w[k] += len * (x[k + 1] - mid) / dx;
-    w[k + 1] += len * (mid - x[k]) / dx;
+    const auto m = at(k, 0.5 * (l + r));
+    w[k] += (r - l) * m[0];
+    w[k + 1] += (r - l) * m[1];
   }
   for (long k = 0; k < n; ++k)
     if (w[k] != 0) out.emplace_back(k, w[k] / (b - a));
@@ -142,15 +159,20 @@ template <int D>
 void WallPressure<D>::buildTerms(const Dictionary& dict) {
   std::array<WallAxis, D> axes;
   for (int k = 0; k < D; ++k) {
-    axes[k] = wallAxis(wall_.min[k], wall_.max[k], wall_.d0, wall_.layers, wall_.open[2 * k], wall_.open[2 * k + 1]);
+    axes[k] = wall_.solid ? wallAxis(wall_.min[k], wall_.max[k], wall_.d0, 0, true, true)
+                          : wallAxis(wall_.min[k], wall_.max[k], wall_.d0, wall_.layers, wall_.open[2 * k],
+                                     wall_.open[2 * k + 1]);
     axisNodes_.push_back(axes[k].x);
   }
+  // The first two layers behind the face: outside a container's surface, inside a solid.
   const WallAxis& n = axes[axis_];
-  const long layer1 = side_ ? n.innerEnd : n.innerBegin - 1, layer2 = side_ ? n.innerEnd + 1 : n.innerBegin - 2;
+  const int out = wall_.solid ? -1 : 1;
+  const long first = side_ ? (wall_.solid ? n.innerEnd - 1 : n.innerEnd) : (wall_.solid ? n.innerBegin : n.innerBegin - 1);
+  const long layer1 = first, layer2 = first + (side_ ? out : -out);
   std::map<std::array<long, D>, double> columns;  // column (normal index 0) -> share
   if (D == 2) {
     const int t = 1 - axis_;
-    for (const auto& [i, w] : segmentWeights(axisNodes_[t], centre_[t] - 0.5 * size_, centre_[t] + 0.5 * size_)) {
+    for (const auto& [i, w] : segmentWeights(axisNodes_[t], centre_[t] - 0.5 * size_, centre_[t] + 0.5 * size_, wall_.solid)) {
       std::array<long, D> c{};
       c[t] = i;
       columns[c] += w;
@@ -170,8 +192,8 @@ void WallPressure<D>::buildTerms(const Dictionary& dict) {
         }
     };
     if (!disc_) {
-      add(segmentWeights(x1, centre_[t1] - 0.5 * size_, centre_[t1] + 0.5 * size_),
-          segmentWeights(x2, centre_[t2] - 0.5 * size_, centre_[t2] + 0.5 * size_), 1.0);
+      add(segmentWeights(x1, centre_[t1] - 0.5 * size_, centre_[t1] + 0.5 * size_, wall_.solid),
+          segmentWeights(x2, centre_[t2] - 0.5 * size_, centre_[t2] + 0.5 * size_, wall_.solid), 1.0);
     } else {
       // Midpoint rule in r (weight r dr) and theta: exact for a linear field by symmetry.
       double total = 0;
@@ -181,7 +203,7 @@ void WallPressure<D>::buildTerms(const Dictionary& dict) {
         for (int it = 0; it < kDiscRays; ++it) {
           const double th = 2 * M_PI * (it + 0.5) / kDiscRays;
           const double u = centre_[t1] + r * std::cos(th), v = centre_[t2] + r * std::sin(th);
-          add(segmentWeights(x1, u, u), segmentWeights(x2, v, v), (ir + 0.5) / total);
+          add(segmentWeights(x1, u, u, wall_.solid), segmentWeights(x2, v, v, wall_.solid), (ir + 0.5) / total);
         }
       }
     }

@@ -5,12 +5,14 @@
 //   a square of side `size` (or `shape disc;`, a disc of diameter `size`).
 //   The face pressure at each wall column is extrapolated from the PPE's pressure of the
 //   first two wall layers (docs/method.md 11: the Adami rows carry the fluid pressure
-//   into the wall), which sit d0/2 and 3d0/2 behind the surface:
+//   into the wall), which sit d0/2 and 3d0/2 behind the surface (s/2 and 3s/2 inside a solid box, s <= d0
+//   its lattice spacing normal to the face):
 //     p_face = p_1 + (p_1 - p_2)/2 = 3/2 p_1 - 1/2 p_2,
 //   exact for a pressure linear across the wall (hydrostatic, or any uniform
 //   acceleration). Along the face the column values are interpolated linearly (2D) or
 //   bilinearly (3D) between the columns, constant beyond the last column of an open
-//   edge, and the interpolant is averaged over the sensor exactly (segment, square: the
+//   edge (linear, the last interval continued, on a solid box's face, whose columns end
+//   s/2 before its edges), and the interpolant is averaged over the sensor exactly (segment, square: the
 //   hat functions' integrals) or by a polar quadrature (disc, 32 x 64 points). The
 //   reading is a fixed weighted sum of wall particles' pressures, so it is smooth in
 //   the sensor's position and size (a sensor narrower than d0 reads the interpolant's
@@ -41,7 +43,11 @@ class WallPressure : public SampledFunctionObject<D> {
 
   // Mean of the linear interpolant of `values` at `nodes` (increasing; constant beyond
   // the ends) over [a, b], as weights per node: (node index, weight), weights sum to 1.
-  static std::vector<std::pair<long, double>> segmentWeights(const std::vector<double>& nodes, double a, double b);
+  // The weights of the nodes in the mean of the piecewise linear interpolant over [a, b]
+  // (its value at a if b <= a): constant beyond the end nodes, or, with linearEnds, the
+  // end interval's line continued (a solid's face beyond its last column).
+  static std::vector<std::pair<long, double>> segmentWeights(const std::vector<double>& nodes, double a, double b,
+                                                             bool linearEnds = false);
   // The sensor's pressure in state `s` (Pa); finds the wall particles first if needed.
   double pressure(const FlowState<D>& s);
   double area() const { return area_; }

@@ -56,6 +56,8 @@ const ScalarParameter radius = region.scalar("radius", dim::length, "circle, sph
 const IntParameter layers = region.integer("layers", "wall: rows of particles outside the surface").def(3).min(1);
 const WordListParameter openFaces = region.wordList("open", "wall: faces without layers (left right bottom top front back)")
     .def("() (every face closed)");
+const SwitchParameter solid = region.onOff("solid",
+    "wall box: a solid body (an obstacle): layers inside the box behind its faces, fluid outside").def(false);
 
 const ParameterGroup velocity("system/particlesDict: regions/<name>/velocity",
     "Initial velocity of a fluid region (absent: at rest).");
@@ -83,6 +85,7 @@ struct Region {
   std::string name;
   const Dictionary* dict = nullptr;
   bool fluid = true, circle = false;
+  bool solid = false;                     // wall: an obstacle (layers inside the box), not a container
   Vec<D> min = Vec<D>::Zero(), max = Vec<D>::Zero();  // fluid box: the filled cells; wall: its surface
   Vec<D> centre = Vec<D>::Zero();
   double radius = 0;
@@ -93,8 +96,14 @@ struct Region {
   Vec<D> outerMin = Vec<D>::Zero(), outerMax = Vec<D>::Zero();  // wall: surface grown by the layers
   std::vector<Vec<D>> points;
 
-  // Inside the wall's layer region: within the grown box, not strictly inside the surface.
+  // Inside the wall's layer region: within the grown box, not strictly inside the surface
+  // (a container); strictly inside the box (a solid).
   bool inLayers(const Vec<D>& x, double tol) const {
+    if (solid) {
+      for (int k = 0; k < D; ++k)
+        if (x[k] <= min[k] + tol || x[k] >= max[k] - tol) return false;
+      return true;
+    }
     bool inner = true;
     for (int k = 0; k < D; ++k) {
       if (x[k] <= outerMin[k] + tol || x[k] >= outerMax[k] - tol) return false;
@@ -195,6 +204,41 @@ void warnWallResidual(const Dictionary& r, const std::string& name, int k, doubl
                      " use spacing " + fmt(a.spacing) + " m (" + std::to_string(a.intervals) + " intervals)");
 }
 
+// The `open` faces of a wall box, each checked against the face names.
+template <int D>
+void readOpenFaces(const Dictionary& r, Region<D>& reg) {
+  const auto faces = faceNames(D);
+  for (const auto& w : openFaces.read(r)) {
+    auto it = std::find(faces.begin(), faces.end(), w);
+    if (it == faces.end()) {
+      std::string list;
+      for (const auto& f : faces) list += (list.empty() ? "" : " ") + f;
+      const std::string near = closestMatch(w, faces);
+      r.error("open", "'" + w + "' is not a face (" + list + ")" + (near.empty() ? "" : "; did you mean '" + near + "'?"));
+    }
+    reg.open[it - faces.begin()] = true;
+  }
+}
+
+// Wall particles of a box: a container's layers outside the surface (outer box minus the
+// surface box), a solid's inside it (the box minus its core `layers` cells in from
+// every face). An upper bound before overlap removal, allocating nothing.
+template <int D>
+double wallCount(const Region<D>& reg) {
+  double inner = 1, outer = 1;
+  for (int k = 0; k < D; ++k) {
+    const double cells = double(reg.cells[k]);
+    if (reg.solid) {
+      outer *= cells;
+      inner *= std::max(0.0, cells - 2.0 * reg.layers);
+    } else {
+      inner *= cells;
+      outer *= cells + double(reg.layers) * (int(!reg.open[2 * k]) + int(!reg.open[2 * k + 1]));
+    }
+  }
+  return outer - inner;
+}
+
 template <int D>
 Region<D> readWall(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
                    double limit) {
@@ -203,31 +247,21 @@ Region<D> readWall(const Dictionary& r, const std::string& name, double d0, cons
   if (shape.read(r) != "box") r.error("shape", "a wall region is a box; circle and sphere are for fluid regions");
   readBox<D>(r, reg, d0);
   reg.layers = layers.read(r);
-  {
-    const auto faces = faceNames(D);
-    for (const auto& w : openFaces.read(r)) {
-      auto it = std::find(faces.begin(), faces.end(), w);
-      if (it == faces.end()) {
-        std::string list;
-        for (const auto& f : faces) list += (list.empty() ? "" : " ") + f;
-        const std::string near = closestMatch(w, faces);
-        r.error("open", "'" + w + "' is not a face (" + list + ")" + (near.empty() ? "" : "; did you mean '" + near + "'?"));
-      }
-      reg.open[it - faces.begin()] = true;
-    }
-  }
-  double inner = 1, outer = 1;
+  reg.solid = solid.read(r);
+  if (reg.solid && hasKey<D>(r, "open"))
+    r.error("open", "a solid wall box (an obstacle) has no open faces: fluid lies outside every face");
+  readOpenFaces<D>(r, reg);
   for (int k = 0; k < D; ++k) {
     const WallSpacing a = wallSpacing(reg.min[k], reg.max[k], d0);
     if (!a.whole) warnWallResidual(r, name, k, reg.max[k] - reg.min[k], d0, a);
     reg.cells[k] = a.intervals;
-    inner *= double(a.intervals);
-    outer *= double(a.intervals) + double(reg.layers) * (int(!reg.open[2 * k]) + int(!reg.open[2 * k + 1]));
   }
-  if (outer - inner > limit) tooMany(regions, name, "wall", outer - inner, limit, d0);
+  const double count = wallCount(reg);
+  if (count > limit) tooMany(regions, name, "wall", count, limit, d0);
   for (int k = 0; k < D; ++k) {
-    reg.outerMin[k] = reg.min[k] - (reg.open[2 * k] ? 0 : reg.layers * d0);
-    reg.outerMax[k] = reg.max[k] + (reg.open[2 * k + 1] ? 0 : reg.layers * d0);
+    const double grow = reg.solid ? 0 : reg.layers * d0;
+    reg.outerMin[k] = reg.min[k] - (reg.open[2 * k] ? 0 : grow);
+    reg.outerMax[k] = reg.max[k] + (reg.open[2 * k + 1] ? 0 : grow);
   }
   return reg;
 }
@@ -255,13 +289,18 @@ void fillFluid(Region<D>& reg, double d0) {
   });
 }
 
-// The wall particles of one box: each face its own lattice (WallLattice.hpp).
+// The wall particles of one box: each face its own lattice (WallLattice.hpp); a solid's
+// inside the box (solidBoxPoints).
 template <int D>
 void fillWall(Region<D>& reg, double d0) {
   std::array<WallAxis, D> axes;
   for (int k = 0; k < D; ++k)
-    axes[k] = wallAxis(reg.min[k], reg.max[k], d0, reg.layers, reg.open[2 * k], reg.open[2 * k + 1]);
-  wallBoxPoints<D>(axes, reg.points);
+    axes[k] = reg.solid ? wallAxis(reg.min[k], reg.max[k], d0, 0, true, true)
+                        : wallAxis(reg.min[k], reg.max[k], d0, reg.layers, reg.open[2 * k], reg.open[2 * k + 1]);
+  if (reg.solid)
+    solidBoxPoints<D>(axes, reg.layers, reg.points);
+  else
+    wallBoxPoints<D>(axes, reg.points);
 }
 
 // Do the shapes of two fluid regions overlap (more than round-off)?
@@ -425,28 +464,31 @@ std::string faceText(const Region<D>& w, int face) {
 // it). The error names the region, the wall holding most of its particles, the
 // faces of that wall the others lie beyond and how many. O(N x walls).
 template <int D>
-void checkAgainstWalls(const Dictionary& regions, const Region<D>& f, const std::vector<Region<D>>& walls, double tol) {
+void checkAgainstWalls(const Dictionary& regions, const Region<D>& f, const std::vector<Region<D>>& allWalls, double tol) {
+  std::vector<const Region<D>*> walls;  // the containers: a solid holds no fluid
+  for (const auto& w : allWalls)
+    if (!w.solid) walls.push_back(&w);
   if (walls.empty()) return;
   auto inAnyWall = [&](const Vec<D>& x) {
-    return std::any_of(walls.begin(), walls.end(), [&](const Region<D>& w) { return faceCrossed(w, x, tol) < 0; });
+    return std::any_of(walls.begin(), walls.end(), [&](const Region<D>* w) { return faceCrossed(*w, x, tol) < 0; });
   };
   std::vector<std::size_t> inside(walls.size(), 0);
   std::size_t outside = 0;
   for (const auto& x : f.points) {
     bool in = false;
     for (std::size_t w = 0; w < walls.size(); ++w)
-      if (faceCrossed(walls[w], x, tol) < 0) { ++inside[w]; in = true; }
+      if (faceCrossed(*walls[w], x, tol) < 0) { ++inside[w]; in = true; }
     if (!in) ++outside;
   }
   if (outside == 0) return;
   const std::size_t home = std::max_element(inside.begin(), inside.end()) - inside.begin();
   if (inside[home] == 0) {
     std::string names;
-    for (const auto& w : walls) names += (names.empty() ? "'" : ", '") + w.name + "'";
+    for (const auto* w : walls) names += (names.empty() ? "'" : ", '") + w->name + "'";
     regions.error(f.name, "fluid region '" + f.name + "' lies outside every wall (" + names +
                               "): no particle of it is inside a wall box (open sides extend the box)");
   }
-  const Region<D>& w = walls[home];
+  const Region<D>& w = *walls[home];
   std::array<std::size_t, 2 * D> beyond{};
   for (const auto& x : f.points)
     if (!inAnyWall(x)) ++beyond[faceCrossed(w, x, tol)];
@@ -467,13 +509,10 @@ void checkTotalCount(const Dictionary& regionsDict, const std::vector<Region<D>>
   double total = 0;
   for (const auto* list : {&fluids, &walls})
     for (const auto& r : *list) {
-      double inner = 1, outer = 1;
-      for (int k = 0; k < D; ++k) {
-        inner *= double(r.cells[k]);
-        outer *= double(r.cells[k]) + double(r.layers) * (int(!r.open[2 * k]) + int(!r.open[2 * k + 1]));
-      }
+      double cells = 1;
+      for (int k = 0; k < D; ++k) cells *= double(r.cells[k]);
       const double a = r.radius / d0;
-      total += r.circle ? (D == 2 ? M_PI * a * a : 4.0 / 3.0 * M_PI * a * a * a) : r.fluid ? inner : outer - inner;
+      total += r.circle ? (D == 2 ? M_PI * a * a : 4.0 / 3.0 * M_PI * a * a * a) : r.fluid ? cells : wallCount(r);
     }
   if (total > limit)
     regionsDict.error("regions", "the regions would hold " + countText(total) + " particles, more than maxParticles " +
@@ -649,7 +688,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
   fillOpenBoundaries<D>(regionsDict, out.openBoundaries, fluidPoints, fluidVelocity, wallGrid, d0, openPoints,
                         openVelocity, openType);
   dict.checkAllRead();
-  for (const auto& w : walls) out.walls.push_back({w.name, w.min, w.max, w.outerMin, w.outerMax, w.open, w.layers, d0});
+  for (const auto& w : walls) out.walls.push_back({w.name, w.min, w.max, w.outerMin, w.outerMax, w.open, w.layers, d0, w.solid});
 
   // 4. The particle set: fluid first, then walls, then inlet and outlet buffers. (A
   // disc's count was estimated from its area; the exact count is checked here.)

@@ -53,11 +53,17 @@
 //   (-z +z); on an open side the other walls end at the box edge. Wall particles
 //   closer than 0.5 d0 to an earlier wall particle are dropped (walls that
 //   share layers do not double them). Wall velocity is 0.
+//   `solid yes` makes the box a solid body (an obstacle) instead of a container: its
+//   layers lie INSIDE the surface box, on the box's own lattice min + (i + 1/2) s_k
+//   (s_k = L_k / ceil(L_k/d0) <= d0, d0 on a whole number of spacings), the points
+//   within `layers` coordinates of a face on any axis (the core deeper than that stays
+//   empty); the first layer sits s_k/2 behind each face. Every face is closed (`open`
+//   is an error); fluid inside the box is removed and the fluid need not lie inside it.
 //
 // Fluid particles closer than 0.5 d0 to a wall particle, or inside a wall's
 // layer region (the box grown by `layers` d0 on its closed sides, minus the
-// open interior), are removed. When the case has walls, every fluid particle
-// left must lie in the closed interior of some wall (its surface box, boundary
+// open interior; a solid box itself), are removed. When the case has container walls,
+// every fluid particle left must lie in the closed interior of some container (its surface box, boundary
 // included, unbounded on an open side): fluid cut by a wall, with particles
 // beyond its layers, is an error naming the region, the wall holding most of
 // it, and how many particles lie beyond which of its faces.

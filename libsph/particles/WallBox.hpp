@@ -5,10 +5,14 @@
 //   layers, d0:          rows of wall particles outside the surface, spacing
 //   open[2k], open[2k+1]: faces -x_k, +x_k without layers (left right bottom top front back)
 //   outerMin, outerMax:  the surface grown by the layers on its closed faces
+//   solid:               an obstacle (`solid yes`): the layers lie inside [min, max] behind
+//                        its faces, the fluid outside; outerMin, outerMax = min, max and
+//                        every face is closed
 // Reads no dictionary keys.
 #pragma once
 #include "core/types.hpp"
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace shizuku {
@@ -21,6 +25,7 @@ struct WallBox {
   std::array<bool, 2 * D> open{};
   int layers = 0;
   double d0 = 0;
+  bool solid = false;
 
   // Inside the layer region deeper than `depth` past the surface: within the outer box,
   // more than `depth` outside the surface box across a closed face k, and more than
@@ -29,7 +34,13 @@ struct WallBox {
   // layers of two faces meet) from counting: its centre may come within d0/2 of the
   // outer rows there as it may of the surface, while in a wall's thickness (across k) any
   // depth counts.
+  // A solid's layer region is the box itself: inside it deeper than `depth` past every face.
   bool inLayers(const Vec<D>& x, double depth) const {
+    if (solid) {
+      for (int k = 0; k < D; ++k)
+        if (x[k] <= min[k] + depth || x[k] >= max[k] - depth) return false;
+      return true;
+    }
     for (int k = 0; k < D; ++k)
       if (x[k] <= outerMin[k] || x[k] >= outerMax[k]) return false;
     for (int k = 0; k < D; ++k) {
@@ -40,6 +51,23 @@ struct WallBox {
       if (within) return true;
     }
     return false;
+  }
+
+  // The face a particle in the layers came through: a container's closed face it lies
+  // beyond, a solid's face nearest to it (0..2D-1: -x +x -y +y -z +z; -1: none).
+  int faceOf(const Vec<D>& x) const {
+    int face = -1;
+    double nearest = INFINITY;
+    for (int f = 0; f < 2 * D; ++f) {
+      const int k = f / 2;
+      if (!solid) {
+        if (!open[f] && (f % 2 ? x[k] > max[k] : x[k] < min[k])) return f;
+        continue;
+      }
+      const double depth = f % 2 ? max[k] - x[k] : x[k] - min[k];
+      if (depth < nearest) { nearest = depth; face = f; }
+    }
+    return face;
   }
 };
 

@@ -1,5 +1,6 @@
 // The lattice of a wall box of any size: see WallLattice.hpp.
 #include "particles/WallLattice.hpp"
+#include "particles/PointGrid.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -60,6 +61,26 @@ void wallBoxPoints(const std::array<WallAxis, D>& axes, std::vector<Vec<D>>& poi
   }
 }
 
+template <int D>
+void solidBoxPoints(const std::array<WallAxis, D>& axes, int layers, std::vector<Vec<D>>& points) {
+  std::array<long, D> lo{}, hi{};
+  for (int k = 0; k < D; ++k) {
+    hi[k] = long(axes[k].x.size());
+    if (hi[k] == 0) return;
+  }
+  forEachIndex<D>(lo, hi, [&](const std::array<long, D>& i) {
+    bool band = false;
+    Vec<D> x;
+    for (int k = 0; k < D; ++k) {
+      band = band || i[k] < layers || i[k] >= hi[k] - layers;
+      x[k] = axes[k].x[std::size_t(i[k])];
+    }
+    if (band) points.push_back(x);
+  });
+}
+
+template void solidBoxPoints<2>(const std::array<WallAxis, 2>&, int, std::vector<Vec<2>>&);
+template void solidBoxPoints<3>(const std::array<WallAxis, 3>&, int, std::vector<Vec<3>>&);
 template void wallBoxPoints<2>(const std::array<WallAxis, 2>&, std::vector<Vec<2>>&);
 template void wallBoxPoints<3>(const std::array<WallAxis, 3>&, std::vector<Vec<3>>&);
 

@@ -60,4 +60,11 @@ WallAxis wallAxis(double min, double max, double d0, int layers, bool openLow, b
 template <int D>
 void wallBoxPoints(const std::array<WallAxis, D>& axes, std::vector<Vec<D>>& points);
 
+// A solid box (an obstacle): the axes hold only the inner coordinates (wallAxis with no
+// layers, min + (i + 1/2) s_k); the points within `layers` coordinates of a face on any
+// axis are appended (x fastest), the core deeper than that is left empty. The first
+// layer sits s_k/2 <= d0/2 behind each face, as a container's does in front of it.
+template <int D>
+void solidBoxPoints(const std::array<WallAxis, D>& axes, int layers, std::vector<Vec<D>>& points);
+
 }  // namespace shizuku

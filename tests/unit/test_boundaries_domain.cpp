@@ -149,6 +149,24 @@ void checkLeaks() {
   BOOST_TEST(leaks[0].face == 3);
   BOOST_TEST(leaks[1].particle == 2);
   BOOST_TEST(leaks[1].face == 1);
+
+  // The same block as a solid wall box (`solid yes`, layers inside it): 0:
+  // above it; 1: 0.4 d0 inside its top face (short of the first layer): no leak; 2: 0.6
+  // d0 inside its top face: a leak through the top; 3: 0.6 d0 inside its +x face (nearer
+  // than the top): a leak through +x. Nothing is found from a move alone.
+  WallBox<D> solid = block;
+  solid.open = {};
+  solid.outerMin = solid.min;
+  solid.outerMax = solid.max;
+  solid.solid = true;
+  const LeakDetector<D> body({solid});
+  const std::vector<Vec<D>> in = {at<D>(0.5, 0.115), at<D>(0.5, 0.096), at<D>(0.5, 0.094), at<D>(0.594, 0.05)};
+  body.find(fluidAt<D>(in), std::vector<Vec<D>>(4, at<D>(0.5, 0.2)), noPeriodic, leaks);
+  BOOST_REQUIRE(leaks.size() == 2u);
+  BOOST_TEST(leaks[0].particle == 2);
+  BOOST_TEST(leaks[0].face == 3);
+  BOOST_TEST(leaks[1].particle == 3);
+  BOOST_TEST(leaks[1].face == 1);
 }
 
 template <int D>

@@ -4,6 +4,8 @@
 //    sizes below and above d0, centred anywhere on the lattice, read rho g (H - y_c) to
 //    the hydrostatic test's tolerance, in 2D and 3D (segment, square, disc); H is the
 //    level the fluid's own pressure gives (y + p/(rho g));
+//  - the same on the faces of a solid wall box (an obstacle, `solid yes`) standing on the
+//    floor, whose first two layers lie inside it, of sizes not a whole number of spacings;
 //  - after the particles are reordered the reading is the same;
 //  - a sensor inside one interval between two wall columns reads the linear
 //    interpolation of the columns' face values at its midpoint; the segment weights equal
@@ -21,6 +23,7 @@
 #include <cmath>
 #include <fstream>
 #include <numeric>
+#include <optional>
 #include <random>
 
 using namespace shizuku;
@@ -29,9 +32,10 @@ namespace {
 constexpr double kRho = 1000, kG = 9.81, kD0 = 0.02;
 constexpr double kPressureTolerance = 1e-9;  // relative to rho g H, as test_isph_hydrostatic.cpp
 
-// A tank `width` wide (x, and z in 3D), `height` high, open at the top, water `depth` deep.
+// A tank `width` wide (x, and z in 3D), `height` high, open at the top, water `depth` deep,
+// and `extra` regions.
 template <int D>
-void writeTank(test::TempCase& c, double width, double height, double depth) {
+void writeTank(test::TempCase& c, double width, double height, double depth, const std::string& extra = "") {
   auto vec = [](double x, double y, double z) {
     return "(" + std::to_string(x) + " " + std::to_string(y) + (D == 3 ? " " + std::to_string(z) : "") + ")";
   };
@@ -39,7 +43,7 @@ void writeTank(test::TempCase& c, double width, double height, double depth) {
   c.file("system/particlesDict", "spacing 0.02;\nregions {\n water { type fluid; shape box; min " + vec(0, 0, 0) +
                                      "; max " + vec(width, depth, width) + "; }\n tank { type wall; shape box; min " +
                                      vec(0, 0, 0) + "; max " + vec(width, height, width) +
-                                     "; layers 3; open (top); }\n}\n");
+                                     "; layers 3; open (top); }\n" + extra + "}\n");
   c.file("system/sphSolution", "pressure { solver BiCGSTAB; tolerance 1e-12; }\n");
   c.file("constant/physicalProperties", "rho 1000; nu 0;\n");
   c.file("constant/g", std::string("value ") + (D == 2 ? "(0 -9.81)" : "(0 -9.81 0)") + ";\n");
@@ -64,7 +68,7 @@ template <int D>
 std::unique_ptr<WallPressure<D>> sensor(const std::string& entries, const WallBox<D>& wall) {
   static std::vector<Dictionary> keep;  // the objects keep pointers into their dictionaries
   keep.reserve(100);
-  keep.push_back(Dictionary::fromString("type wallPressure; wall tank; " + entries, "test"));
+  keep.push_back(Dictionary::fromString("type wallPressure; wall " + wall.name + "; " + entries, "test"));
   return std::make_unique<WallPressure<D>>("sensor", keep.back(), std::vector<WallBox<D>>{wall});
 }
 
@@ -95,9 +99,10 @@ struct Sensor {
 };
 
 template <int D>
-void checkHydrostatic(double width, double height, double depth, const std::vector<Sensor>& sensors) {
+void checkHydrostatic(double width, double height, double depth, const std::vector<Sensor>& sensors,
+                      const std::string& extra = "", const std::optional<WallBox<D>>& sensed = std::nullopt) {
   test::TempCase c("wallPressure");
-  writeTank<D>(c, width, height, depth);
+  writeTank<D>(c, width, height, depth, extra);
   SimulationOptions opt;
   opt.functionObjects = false;
   Simulation<D> sim(c.dir(), opt);
@@ -105,7 +110,7 @@ void checkHydrostatic(double width, double height, double depth, const std::vect
   sim.step(1e-3);
   const double H = level(sim.state());
   BOOST_TEST_MESSAGE(D << "D tank: fluid level H = " << H);
-  const WallBox<D> wall = tankBox<D>(width, height);
+  const WallBox<D> wall = sensed ? *sensed : tankBox<D>(width, height);
   for (const auto& sn : sensors) {
     auto w = sensor<D>(sn.entries, wall);
     const double p = w->pressure(sim.state()), exact = kRho * kG * (H - sn.y);
@@ -118,6 +123,29 @@ void checkHydrostatic(double width, double height, double depth, const std::vect
   const double before = w->pressure(sim.state());
   reverseOrder(sim.state());
   BOOST_TEST(w->pressure(sim.state()) == before);
+}
+
+// A solid wall box named "block" from lo to hi, 3 layers, as the generator describes it.
+template <int D>
+WallBox<D> blockBox(const Vec<D>& lo, const Vec<D>& hi) {
+  WallBox<D> w;
+  w.name = "block";
+  w.min = w.outerMin = lo;
+  w.max = w.outerMax = hi;
+  w.layers = 3;
+  w.d0 = kD0;
+  w.solid = true;
+  return w;
+}
+
+std::string text(const Vec<2>& x) { return "(" + std::to_string(x[0]) + " " + std::to_string(x[1]) + ")"; }
+std::string text(const Vec<3>& x) {
+  return "(" + std::to_string(x[0]) + " " + std::to_string(x[1]) + " " + std::to_string(x[2]) + ")";
+}
+
+template <int D>
+std::string blockRegion(const Vec<D>& lo, const Vec<D>& hi) {
+  return " block { type wall; shape box; min " + text(lo) + "; max " + text(hi) + "; layers 3; solid yes; }\n";
 }
 }  // namespace
 
@@ -154,6 +182,33 @@ BOOST_AUTO_TEST_CASE(hydrostatic_tank_3d) {
   checkHydrostatic<3>(0.2, 0.3, 0.2, sensors);
 }
 
+BOOST_AUTO_TEST_CASE(hydrostatic_obstacle_2d) {
+  // A block 0.12 x 0.08 on the floor of a 0.4 x 0.5 tank, water 0.3 deep (faces on the
+  // fluid lattice's faces, as the tank's: the still water is then exact after one step):
+  // sensors on its top and both sides.
+  const Vec<2> lo(0.14, 0), hi(0.26, 0.08);
+  std::vector<Sensor> sensors;
+  for (double x : {0.15, 0.1931, 0.24})
+    for (double size : {0.0042, 0.017}) sensors.push_back({"centre (" + std::to_string(x) + " 0.08); size " + std::to_string(size) + ";", 0.08});
+  for (double y : {0.021, 0.05, 0.07})
+    for (double x : {0.14, 0.26}) sensors.push_back({"centre (" + std::to_string(x) + " " + std::to_string(y) + "); size 0.013;", y});
+  checkHydrostatic<2>(0.4, 0.5, 0.3, sensors, blockRegion<2>(lo, hi), blockBox<2>(lo, hi));
+}
+
+BOOST_AUTO_TEST_CASE(hydrostatic_obstacle_3d) {
+  // A block 0.08 x 0.1 x 0.06 on the floor of a 0.2 x 0.3 x 0.2 tank, water 0.2 deep:
+  // squares and discs on its top, its -x face and its +z face.
+  const Vec<3> lo(0.06, 0, 0.06), hi(0.14, 0.1, 0.12);
+  std::vector<Sensor> sensors;
+  for (const std::string shape : {"square", "disc"}) {
+    const std::string sz = "; size 0.013; shape " + shape + ";";
+    sensors.push_back({"centre (0.1 0.1 0.1)" + sz, 0.1});
+    sensors.push_back({"centre (0.06 0.04 0.091)" + sz, 0.04});
+    sensors.push_back({"centre (0.0811 0.0713 0.12)" + sz, 0.0713});
+  }
+  checkHydrostatic<3>(0.2, 0.3, 0.2, sensors, blockRegion<3>(lo, hi), blockBox<3>(lo, hi));
+}
+
 BOOST_AUTO_TEST_CASE(sensor_between_two_columns_reads_the_linear_interpolation) {
   // Wall pressures set to a nonlinear g(y) on the right wall (the face value of a column
   // is then g(y_k)): a sensor of 0.2 d0 inside [y_k, y_k+1] reads the linear interpolation
@@ -179,36 +234,40 @@ BOOST_AUTO_TEST_CASE(sensor_between_two_columns_reads_the_linear_interpolation) 
 
 BOOST_AUTO_TEST_CASE(segment_weights_integrate_the_interpolant) {
   // Against a midpoint-rule integral of the piecewise linear interpolant (constant beyond
-  // the end nodes) with 2e5 cells, on uneven nodes, intervals inside, across and beyond.
+  // the end nodes, or with linearEnds the end intervals' lines continued) with 2e5 cells,
+  // on uneven nodes, intervals inside, across and beyond.
   const std::vector<double> x = {-0.03, -0.01, 0.01, 0.026, 0.042, 0.058, 0.074, 0.09, 0.11};
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> val(-1, 1);
   std::vector<double> f(x.size());
   for (auto& v : f) v = val(rng);
-  auto interp = [&](double s) {
-    if (s <= x.front()) return f.front();
-    if (s >= x.back()) return f.back();
-    const std::size_t k = std::size_t(std::upper_bound(x.begin(), x.end(), s) - x.begin()) - 1;
-    const double t = (s - x[k]) / (x[k + 1] - x[k]);
-    return (1 - t) * f[k] + t * f[k + 1];
-  };
-  for (auto [a, b] : std::vector<std::pair<double, double>>{{0.0, 0.005}, {0.012, 0.07}, {-0.05, 0.2}, {0.1, 0.13},
-                                                             {-0.04, -0.02}, {0.03, 0.03}}) {
-    double weighted = 0, total = 0;
-    for (const auto& [k, w] : WallPressure<2>::segmentWeights(x, a, b)) {
-      weighted += w * f[std::size_t(k)];
-      total += w;
-    }
-    double brute = 0;
-    const int n = 200000;
-    if (b > a) {
-      for (int i = 0; i < n; ++i) brute += interp(a + (i + 0.5) * (b - a) / n) / n;
-    } else {
-      brute = interp(a);
-    }
-    BOOST_TEST_CONTEXT("[" << a << ", " << b << "]") {
-      BOOST_TEST(std::abs(total - 1) < 1e-14);
-      BOOST_TEST(std::abs(weighted - brute) < 1e-9);
+  for (bool linearEnds : {false, true}) {
+    auto interp = [&](double s) {
+      if (!linearEnds && s <= x.front()) return f.front();
+      if (!linearEnds && s >= x.back()) return f.back();
+      std::size_t k = std::size_t(std::upper_bound(x.begin(), x.end(), s) - x.begin());
+      k = std::min(std::max(k, std::size_t(1)), x.size() - 1) - 1;
+      const double t = (s - x[k]) / (x[k + 1] - x[k]);
+      return (1 - t) * f[k] + t * f[k + 1];
+    };
+    for (auto [a, b] : std::vector<std::pair<double, double>>{{0.0, 0.005}, {0.012, 0.07}, {-0.05, 0.2}, {0.1, 0.13},
+                                                               {-0.04, -0.02}, {0.03, 0.03}, {0.12, 0.12}}) {
+      double weighted = 0, total = 0;
+      for (const auto& [k, w] : WallPressure<2>::segmentWeights(x, a, b, linearEnds)) {
+        weighted += w * f[std::size_t(k)];
+        total += w;
+      }
+      double brute = 0;
+      const int n = 200000;
+      if (b > a) {
+        for (int i = 0; i < n; ++i) brute += interp(a + (i + 0.5) * (b - a) / n) / n;
+      } else {
+        brute = interp(a);
+      }
+      BOOST_TEST_CONTEXT("[" << a << ", " << b << "] linearEnds " << linearEnds) {
+        BOOST_TEST(std::abs(total - 1) < 1e-14);
+        BOOST_TEST(std::abs(weighted - brute) < 1e-9);
+      }
     }
   }
 }

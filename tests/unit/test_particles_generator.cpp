@@ -276,6 +276,64 @@ regions
   BOOST_TEST(walls3("(front back)") == 960u);
 }
 
+// A solid wall box (an obstacle) on the floor of a tank: its layers lie inside it, the
+// first s/2 behind each face (s = its lattice spacing, d0 on a whole number of spacings),
+// its core deeper than `layers` is empty, no fluid lies inside it, and the fluid count is
+// the tank's minus the block's cells. Counts by hand.
+template <int D>
+void checkSolidBox(const std::string& blockMax, const Vec<D>& hi, const std::array<long, D>& cells,
+                   std::size_t fluidExpected) {
+  const std::string z = D == 3 ? " 0" : "", zMax = D == 3 ? " 0.3" : "";
+  const auto g = generate<D>("spacing 0.01; regions {\n"
+                             " water { type fluid; shape box; min (0 0" + z + "); max (0.6 0.3" + zMax + "); }\n"
+                             " tank { type wall; shape box; min (0 0" + z + "); max (0.6 0.5" + zMax + "); open (top); }\n"
+                             " block { type wall; shape box; min (0.2 0" + z + "); max " + blockMax +
+                             "; layers 3; solid yes; }\n}\n");
+  const auto& x = g.set.position;
+  Vec<D> blo = Vec<D>::Zero();
+  blo[0] = 0.2;
+  std::size_t inBlock = 0, fluid = 0;
+  Vec<D> first = Vec<D>::Constant(1e9), last = Vec<D>::Constant(-1e9);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const bool inside = ((x[i] - blo).array() > 0).all() && ((hi - x[i]).array() > 0).all();
+    if (g.set.isFluid(i)) {
+      ++fluid;
+      BOOST_TEST(!inside);
+    } else if (inside) {
+      ++inBlock;
+      first = first.cwiseMin(x[i]);
+      last = last.cwiseMax(x[i]);
+    }
+  }
+  double all = 1, core = 1;
+  for (int k = 0; k < D; ++k) {
+    all *= double(cells[k]);
+    core *= double(std::max(0L, cells[k] - 6));
+    const double s = (hi[k] - blo[k]) / double(cells[k]);
+    BOOST_TEST(std::abs(first[k] - (blo[k] + s / 2)) < 1e-12);
+    BOOST_TEST(std::abs(last[k] - (hi[k] - s / 2)) < 1e-12);
+  }
+  BOOST_TEST(inBlock == std::size_t(all - core));
+  BOOST_TEST(fluid == fluidExpected);
+  BOOST_REQUIRE(g.walls.size() == 2u);
+  BOOST_TEST(g.walls[1].solid);
+  BOOST_TEST((g.walls[1].outerMin - blo).norm() == 0.0);
+  BOOST_TEST((g.walls[1].outerMax - hi).norm() == 0.0);
+}
+
+BOOST_AUTO_TEST_CASE(solid_box_obstacle_2d_and_3d) {
+  // Whole: 0.2 x 0.12 (20 x 12 cells): 240 - 14 x 6 = 156 wall particles; fluid 60 x 30
+  // minus 20 x 12. Not whole: 0.213 x 0.1071 (22 and 11 intervals of s < d0), the fluid
+  // cells it covers: x in (0.2, 0.413): 21 columns (0.205 .. 0.405), y < 0.1071: 11 rows.
+  checkSolidBox<2>("(0.4 0.12)", Vec<2>(0.4, 0.12), {20, 12}, 60 * 30 - 20 * 12);
+  checkSolidBox<2>("(0.413 0.1071)", Vec<2>(0.413, 0.1071), {22, 11}, 60 * 30 - 21 * 11);
+  // 3D: 0.2 x 0.1 x 0.1 (20 x 10 x 10 cells; core 14 x 4 x 4).
+  checkSolidBox<3>("(0.4 0.1 0.1)", Vec<3>(0.4, 0.1, 0.1), {20, 10, 10}, 60 * 30 * 30 - 20 * 10 * 10);
+  CHECK_ERROR(2, "spacing 0.01; regions { w { type fluid; shape box; min (0 0); max (1 1); }\n"
+                 " b { type wall; shape box; min (0.2 0); max (0.4 0.1); solid yes; open (top); } }",
+              "particlesDict:2", "open", "solid");
+}
+
 BOOST_AUTO_TEST_CASE(fluid_overlapping_walls_is_removed) {
   // A column reaching through the left wall's 3 layers: x centres -0.025 .. 0.845 (88);
   // the 3 columns with x < 0 lie in the wall's layer region: 85 * 50 = 4250 remain.
