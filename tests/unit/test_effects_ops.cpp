@@ -180,9 +180,7 @@ void checkTangentialSlab() {
     Fixture<D> f;
     rng().seed(3);
     std::uniform_real_distribution<double> u(-0.1, 0.1);
-    std::array<int, 3> hi{width - 1, width - 1, width - 1};
-    hi[D - 1] = top;
-    forBox<D>({0, 0, 0}, hi, [&](const std::array<int, 3>& idx) {
+    forSlab<D>(width, 0, top, [&](const std::array<int, 3>& idx) {
       const SurfaceClass c = idx[D - 1] == top ? SurfaceClass::free : idx[D - 1] >= top - 2 ? SurfaceClass::vicinity
                                                                                              : SurfaceClass::interior;
       Vec<D> x = latticePoint<D>(idx, 1.0);
@@ -190,9 +188,7 @@ void checkTangentialSlab() {
       const std::size_t i = f.add(x, ParticleType::fluid, c);
       if (c != SurfaceClass::interior) f.s.particles.normal[i] = Vec<D>::Unit(D - 1);
     });
-    for (int k = 0; k < D - 1; ++k) f.s.periodic.periodic[k] = true;
-    f.s.periodic.lo = Vec<D>::Constant(-0.5);
-    f.s.periodic.hi = Vec<D>::Constant(width - 0.5);
+    f.setPeriodicAlongSurface(width);
     f.update();
     ShiftingDistribution<D> e(variant(v));
     auto dr = shiftOnce(f, e);

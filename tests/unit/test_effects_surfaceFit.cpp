@@ -26,10 +26,7 @@ namespace {
 template <int D>
 std::size_t flatSurface(Fixture<D>& f, int width, int top) {
   std::size_t centre = 0;
-  std::array<int, 3> lo{0, 0, 0}, hi{width - 1, width - 1, width - 1};
-  lo[D - 1] = 0;
-  hi[D - 1] = top;
-  forBox<D>(lo, hi, [&](const std::array<int, 3>& idx) {
+  forSlab<D>(width, 0, top, [&](const std::array<int, 3>& idx) {
     const int depth = top - idx[D - 1];
     const SurfaceClass c = depth == 0 ? SurfaceClass::free : depth < 2.4 ? SurfaceClass::vicinity
                                                                           : SurfaceClass::interior;
@@ -39,9 +36,7 @@ std::size_t flatSurface(Fixture<D>& f, int width, int top) {
     for (int k = 0; k < D - 1; ++k) middle = middle && idx[k] == width / 2;
     if (middle) centre = i;
   });
-  for (int k = 0; k < D - 1; ++k) f.s.periodic.periodic[k] = true;
-  f.s.periodic.lo = Vec<D>::Constant(-0.5);
-  f.s.periodic.hi = Vec<D>::Constant(width - 0.5);
+  f.setPeriodicAlongSurface(width);
   return centre;
 }
 

@@ -151,9 +151,7 @@ SlabResult<D> slab(double a, double vicinityDepth) {
   const int top = 14, width = D == 2 ? 20 : 8;
   SlabResult<D> out;
   out.width = width;
-  std::array<int, 3> hi{width - 1, width - 1, width - 1};
-  hi[D - 1] = top;
-  forBox<D>({0, 0, 0}, hi, [&](const std::array<int, 3>& idx) {
+  forSlab<D>(width, 0, top, [&](const std::array<int, 3>& idx) {
     const int depth = std::min(idx[D - 1], top - idx[D - 1]);
     const SurfaceClass c = depth == 0 ? SurfaceClass::free
                            : depth < vicinityDepth ? SurfaceClass::vicinity
@@ -162,9 +160,7 @@ SlabResult<D> slab(double a, double vicinityDepth) {
     out.depth.push_back(depth);
     out.z.push_back(idx[D - 1] * a);
   });
-  for (int k = 0; k < D - 1; ++k) f.s.periodic.periodic[k] = true;
-  f.s.periodic.lo = Vec<D>::Constant(-0.5 * a);
-  f.s.periodic.hi = Vec<D>::Constant((width - 0.5) * a);
+  f.setPeriodicAlongSurface(width, a);
   f.update();
   VolumeCorrection<D> e(0.1);
   out.dr.assign(f.s.size(), Vec<D>::Zero());

@@ -21,19 +21,14 @@ constexpr int kWidth = 10;  // sites along each periodic direction
 // vicinity rows 4-5.
 template <int D>
 void slab(Fixture<D>& f) {
-  std::array<int, 3> lo{0, 0, 0}, hi{kWidth - 1, kWidth - 1, kWidth - 1};
-  lo[D - 1] = -3;
-  hi[D - 1] = 6;
-  forBox<D>(lo, hi, [&](const std::array<int, 3>& idx) {
+  forSlab<D>(kWidth, -3, 6, [&](const std::array<int, 3>& idx) {
     const int z = idx[D - 1];
     const bool wall = z < 0;
     const SurfaceClass c = wall ? SurfaceClass::interior : z == 6 ? SurfaceClass::free
                            : z >= 4 ? SurfaceClass::vicinity : SurfaceClass::interior;
     f.add(latticePoint<D>(idx, 1.0), wall ? ParticleType::wall : ParticleType::fluid, c);
   });
-  for (int k = 0; k < D - 1; ++k) f.s.periodic.periodic[k] = true;
-  f.s.periodic.lo = Vec<D>::Constant(-0.5);
-  f.s.periodic.hi = Vec<D>::Constant(kWidth - 0.5);
+  f.setPeriodicAlongSurface(kWidth);
   f.update();
 }
 

@@ -56,12 +56,8 @@ template <int D>
 void checkSlab(double vicinityRadius) {
   Fixture<D> f;
   const int width = D == 2 ? 12 : 8, top = 11;
-  std::array<int, 3> hi{width - 1, width - 1, width - 1};
-  hi[D - 1] = top;
-  forBox<D>({0, 0, 0}, hi, [&](const std::array<int, 3>& idx) { f.add(latticePoint<D>(idx, 1.0)); });
-  for (int k = 0; k < D - 1; ++k) f.s.periodic.periodic[k] = true;
-  f.s.periodic.lo = Vec<D>::Constant(-0.5);
-  f.s.periodic.hi = Vec<D>::Constant(width - 0.5);
+  forSlab<D>(width, 0, top, [&](const std::array<int, 3>& idx) { f.add(latticePoint<D>(idx, 1.0)); });
+  f.setPeriodicAlongSurface(width);
   f.update();
   FreeSurfaceDetector<D>(parameters<D>(vicinityRadius)).detect(f.s);
   long normals = 0;
