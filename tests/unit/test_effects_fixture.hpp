@@ -64,6 +64,14 @@ struct Fixture {
     s.periodic.hi = hi;
   }
 
+  // Periodic along a surface normal to e_D: the first D - 1 directions, over
+  // [-a/2, (width - 1/2) a) (`width` lattice sites of spacing a).
+  void setPeriodicAlongSurface(int width, double a = 1.0) {
+    for (int k = 0; k < D - 1; ++k) s.periodic.periodic[k] = true;
+    s.periodic.lo = Vec<D>::Constant(-0.5 * a);
+    s.periodic.hi = Vec<D>::Constant((width - 0.5) * a);
+  }
+
   // x += dr for every particle (wrapped if periodic).
   void move(const std::vector<Vec<D>>& dr) {
     for (std::size_t i = 0; i < s.size(); ++i) {
@@ -109,6 +117,16 @@ void forBox(const std::array<int, 3>& lo, const std::array<int, 3>& hi, F&& f) {
   for (int z = z0; z <= z1; ++z)
     for (int y = lo[1]; y <= hi[1]; ++y)
       for (int x = lo[0]; x <= hi[0]; ++x) f(std::array<int, 3>{x, y, z});
+}
+
+// Calls f(index triple) for every site of a slab: [0, width - 1] along the first D - 1
+// directions, [z0, z1] along e_D.
+template <int D, class F>
+void forSlab(int width, int z0, int z1, F&& f) {
+  std::array<int, 3> lo{0, 0, 0}, hi{width - 1, width - 1, width - 1};
+  lo[D - 1] = z0;
+  hi[D - 1] = z1;
+  forBox<D>(lo, hi, f);
 }
 
 inline std::mt19937& rng() {

@@ -2,6 +2,8 @@
 // O(N^2) brute force on random 2D/3D sets, with and without periodic
 // directions (minimum image across the boundary), no self pairs, rows sorted
 // by j, identical for 1 and 2 threads, cellOrder a permutation sorted by cell,
+// in 3D every combination of periodic directions against a minimum image computed here
+// (not with PeriodicBox::difference), a pair through the corner of a 3D box,
 // rebuilds reuse the buffers, bad periodic boxes are rejected; particles far
 // from the rest (spray) change neither the pairs nor the grid's cell size.
 #define BOOST_TEST_MODULE particles_neighbours
@@ -128,6 +130,100 @@ BOOST_AUTO_TEST_CASE(periodic_equals_brute_force) {
   compareWithBruteForce<3>(3000, 0.12, p3, 9);
   p3.periodic = {true, true, true};
   compareWithBruteForce<3>(1000, 0.4, p3, 10);
+}
+
+namespace {
+
+// Minimum image computed independently of PeriodicBox::difference: per periodic direction
+// the image n L (n = -2..2, inputs up to one length outside the box) nearest to zero.
+Vec<3> minimumImage(const Vec<3>& a, const Vec<3>& b, const PeriodicBox<3>& box) {
+  Vec<3> d = a - b;
+  for (int k = 0; k < 3; ++k) {
+    if (!box.periodic[k]) continue;
+    const double L = box.hi[k] - box.lo[k];
+    double best = d[k];
+    for (int n = -2; n <= 2; ++n)
+      if (std::abs(d[k] - n * L) < std::abs(best)) best = d[k] - n * L;
+    d[k] = best;
+  }
+  return d;
+}
+
+// Random points in an offset, non-cubic box; in periodic directions one point in ten is
+// moved a whole length out of the box (the search must wrap it). The pairs equal both the
+// library's brute force and the independent minimum image: same j, r_ij to round-off.
+void checkPeriodic3d(const std::array<bool, 3>& periodic, double radius, unsigned seed) {
+  PeriodicBox<3> box;
+  box.periodic = periodic;
+  box.lo = Vec<3>(-1.3, 0.2, 2.0);
+  box.hi = box.lo + Vec<3>(1.0, 0.8, 1.2);
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Vec<3>> x(700);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double L = box.hi[k] - box.lo[k];
+      x[i][k] = box.lo[k] + L * u(gen);
+      if (periodic[k] && i % 10 == 0) x[i][k] += (i % 20 == 0 ? L : -L);
+    }
+  NeighbourSearch<3> search(radius, box);
+  NeighbourList<3> nl, ref;
+  search.build(x, nl);
+  bruteForceNeighbours(x, radius, box, ref);
+  checkEqual(nl, ref);
+  checkRows(nl, radius);
+  long wrapped = 0, missing = 0;
+  double err = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    Index p = nl.begin(i);
+    for (std::size_t j = 0; j < x.size(); ++j) {
+      const Vec<3> d = minimumImage(x[i], x[j], box);
+      if (j == i || !(d.norm() < radius)) continue;
+      while (p < nl.end(i) && nl.j[p] < Index(j)) ++p;
+      if (p == nl.end(i) || nl.j[p] != Index(j)) { ++missing; continue; }
+      err = std::max(err, (nl.rij[p] - d).norm());
+      wrapped += (x[i] - x[j] - d).norm() > 0.5 * radius;
+    }
+  }
+  BOOST_TEST_MESSAGE("periodic (" << periodic[0] << periodic[1] << periodic[2] << "), radius " << radius << ": "
+                                  << nl.numPairs() << " pairs, " << wrapped << " across a boundary");
+  BOOST_TEST(missing == 0);
+  BOOST_TEST(err < 1e-14);
+  BOOST_TEST(nl.numPairs() > x.size());  // not vacuous
+  BOOST_TEST(wrapped > 0);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(periodic_3d_every_combination_equals_minimum_image) {
+  // The seven combinations of one, two and three periodic directions; radius 0.15 (5 to 8
+  // cells per direction) and 0.39 (2 cells along the 0.8 direction, 3 along 1.2).
+  unsigned seed = 20;
+  for (int mask = 1; mask < 8; ++mask) {
+    const std::array<bool, 3> periodic{(mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0};
+    checkPeriodic3d(periodic, 0.15, seed++);
+    checkPeriodic3d(periodic, 0.39, seed++);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(pair_across_three_periodic_boundaries) {
+  // Two particles at opposite corners of the box [(-1, 0, 2), (1, 1, 3.5)): with all three
+  // directions periodic they are neighbours through the corner, r_ab = (0.02, 0.03, 0.04);
+  // with only x periodic they are 1 and 1.5 apart in y and z: no pair.
+  PeriodicBox<3> box;
+  box.lo = Vec<3>(-1, 0, 2);
+  box.hi = Vec<3>(1, 1, 3.5);
+  const std::vector<Vec<3>> x = {box.lo + Vec<3>(0.01, 0.02, 0.03), box.hi - Vec<3>(0.01, 0.01, 0.01)};
+  NeighbourList<3> nl;
+  box.periodic = {true, true, true};
+  NeighbourSearch<3>(0.1, box).build(x, nl);
+  BOOST_REQUIRE(nl.numPairs() == 2u);
+  BOOST_TEST((nl.rij[nl.begin(0)] - Vec<3>(0.02, 0.03, 0.04)).norm() < 1e-14);
+  BOOST_TEST((nl.rij[nl.begin(1)] + Vec<3>(0.02, 0.03, 0.04)).norm() < 1e-14);
+  BOOST_TEST(std::abs(nl.r[nl.begin(0)] - std::sqrt(0.0029)) < 1e-14);
+  box.periodic = {true, false, false};
+  NeighbourSearch<3>(0.1, box).build(x, nl);
+  BOOST_TEST(nl.numPairs() == 0u);
 }
 
 BOOST_AUTO_TEST_CASE(pair_across_periodic_boundary) {
