@@ -1,5 +1,5 @@
 """What the Python test scripts share (docs/testing.md): one assertion and summary
-style, the case-dictionary edits, copying and running a case, and reading particle
+style, the case-dictionary edits, copying and running a case, reading and writing particle
 files and time directories. Every script of tests/ imports it after putting this
 folder on sys.path:
 
@@ -250,6 +250,48 @@ def read_vtp(path):
         if a is not None:
             out["field:" + a.GetName()] = vtk_to_numpy(a).copy()
     return out
+
+
+def write_vtp(path, points, arrays, field_data, raw=False):
+    """Write a hand-made particles.vtp (making its folder): points N x 3, one vertex cell
+    per particle, point arrays {name: numpy values}, field data {name: float}. raw: raw
+    appended data with UInt64 block headers, as Shizuku writes it; else VTK's inline
+    binary. Returns True when VTK wrote it."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+    poly = vtkPolyData()
+    pts = vtkPoints()
+    pts.SetData(numpy_to_vtk(points, deep=True))
+    poly.SetPoints(pts)
+    cells = vtkCellArray()
+    for i in range(len(points)):
+        cells.InsertNextCell(1)
+        cells.InsertCellPoint(i)
+    poly.SetVerts(cells)
+    for name, values in arrays.items():
+        a = numpy_to_vtk(values, deep=True)
+        a.SetName(name)
+        poly.GetPointData().AddArray(a)
+    for name, value in field_data.items():
+        a = vtkDoubleArray()
+        a.SetName(name)
+        a.InsertNextValue(value)
+        poly.GetFieldData().AddArray(a)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    w = vtkXMLPolyDataWriter()
+    w.SetFileName(path)
+    w.SetInputData(poly)
+    if raw:
+        w.SetDataModeToAppended()
+        w.EncodeAppendedDataOff()
+        w.SetCompressorTypeToNone()
+        w.SetHeaderTypeToUInt64()
+    else:
+        w.SetDataModeToBinary()
+    return w.Write() == 1
 
 
 def png_picture(path):
