@@ -92,6 +92,15 @@ def read_tokens(path):
 
 # --- particle files -----------------------------------------------------------
 
+# The unit of each point array of a particles.vtp (docs/output.md), for colour-bar titles.
+UNITS = {"p": "Pa", "U": "m/s", "rhoN": "kg/m^3", "normal": "-", "shift": "m", "type": "-",
+         "surface": "-", "id": "-", "densityError": "%"}
+# How a 3D case is looked at, by shizukuPlot's perspective picture and shizukuPvsm's
+# ParaView camera alike: y up, from VIEW_ELEVATION degrees above the horizontal and from
+# the +z side turned VIEW_AZIMUTH degrees towards +x, so that the x-y face (the plane
+# of the 2D pictures) is in front with x to the right.
+VIEW_ELEVATION, VIEW_AZIMUTH = 25.0, 30.0
+
 VTK_SIZES = {"Int8": 1, "UInt8": 1, "Int16": 2, "UInt16": 2, "Int32": 4, "UInt32": 4, "Int64": 8, "UInt64": 8,
              "Float32": 4, "Float64": 8}
 MAX_COUNT = 2 ** 31 - 1
