@@ -205,3 +205,8 @@ def read_vtp(path):
             except Exception:
                 pass
     return points, fields, info
+
+
+def dimension(info):
+    """2 or 3, from the field data of a particles.vtp (read_vtp's third item; 2 without it)."""
+    return 3 if info.get("dimension", 2) == 3 else 2
