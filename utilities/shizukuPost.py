@@ -1,8 +1,9 @@
 """What shizukuPlot and shizukuCompare share in reading a case (docs/design.md 1.3): folder
 names that are times, the walk of postProcessing/<name>/<startTime>/<file>, the rule by
 which a later start time replaces the rows from its start on, and the header and tokens
-of one postProcessing file. Each script turns the tokens into its own numbers:
-shizukuPlot forgiving (nan for what is not a number), shizukuCompare strict.
+of one postProcessing file, and the reader of a particles.vtp (its XML header checked
+before VTK reads it). Each script turns the tokens into its own numbers: shizukuPlot
+forgiving (nan for what is not a number), shizukuCompare strict.
 
 The scripts find this module next to their own real path, so it goes wherever they go:
 the source tree, the build tree, or one bin folder they are copied into side by side."""
@@ -87,3 +88,125 @@ def read_tokens(path):
     if names is None:
         raise InputError(f"{path}: no '# columns:' line")
     return names, units, rows
+
+
+# --- particle files -----------------------------------------------------------
+
+# The unit of each point array of a particles.vtp (docs/output.md), for colour-bar titles.
+UNITS = {"p": "Pa", "U": "m/s", "rhoN": "kg/m^3", "normal": "-", "shift": "m", "type": "-",
+         "surface": "-", "id": "-", "densityError": "%"}
+# How a 3D case is looked at, by shizukuPlot's perspective picture and shizukuPvsm's
+# ParaView camera alike: y up, from VIEW_ELEVATION degrees above the horizontal and from
+# the +z side turned VIEW_AZIMUTH degrees towards +x, so that the x-y face (the plane
+# of the 2D pictures) is in front with x to the right.
+VIEW_ELEVATION, VIEW_AZIMUTH = 25.0, 30.0
+
+VTK_SIZES = {"Int8": 1, "UInt8": 1, "Int16": 2, "UInt16": 2, "Int32": 4, "UInt32": 4, "Int64": 8, "UInt64": 8,
+             "Float32": 4, "Float64": 8}
+MAX_COUNT = 2 ** 31 - 1
+
+
+def check_count(path, tag, attrs, key):
+    """attrs[key] (if present) as a count 0 <= n < 2^31, else InputError naming the file."""
+    text = attrs.get(key)
+    if text is None:
+        return None
+    if not re.fullmatch(r"\+?[0-9]+", text.strip()) or int(text) > MAX_COUNT:
+        raise InputError(f'{path}: <{tag}> {key}="{text}" is not a count (an integer from 0 to {MAX_COUNT}): '
+                         "the file is corrupt")
+    return int(text)
+
+
+def check_appended_array(path, attrs, data, at, header_size, expected):
+    """One raw appended array: inside the file, its byte count (the block header)
+    equal to expected tuples x components x type size (expected None: unknown)."""
+    name, size = attrs.get("Name", "?"), VTK_SIZES.get(attrs.get("type"))
+    if size is None:
+        raise InputError(f"{path}: array '{name}': unknown type '{attrs.get('type')}': the file is corrupt")
+    if at + header_size > len(data):
+        raise InputError(f"{path}: array '{name}' starts past the end of the file (cut short or corrupt)")
+    nbytes = int.from_bytes(data[at:at + header_size], "little")
+    if at + header_size + nbytes > len(data):
+        raise InputError(f"{path}: array '{name}' holds {nbytes} bytes by its header but the file ends "
+                         f"{len(data) - at - header_size} bytes after it (cut short or corrupt)")
+    components = check_count(path, "DataArray", attrs, "NumberOfComponents") or 1
+    if expected is not None and nbytes != expected * components * size:
+        raise InputError(f"{path}: array '{name}' holds {nbytes} bytes, but {expected} tuples of {components} x "
+                         f"{size} bytes are {expected * components * size}: the file is corrupt")
+
+
+def check_vtp_header(path):
+    """Check a particles.vtp before VTK reads it (VTK crashes on some corrupt
+    headers): every count of the XML header is an integer 0 <= n < 2^31, and
+    every uncompressed raw appended array lies inside the file with the byte
+    count its block header states, equal to its tuples (NumberOfPoints, or
+    NumberOfTuples in FieldData) times components times type size.
+    InputError names the file."""
+    with open(path, "rb") as f:
+        data = f.read()
+    appended = re.search(rb"<AppendedData[^>]*>", data)
+    header = data[:appended.start() if appended else len(data)].decode("utf-8", "replace")
+    root = re.search(r"<VTKFile([^>]*)>", header)
+    if not root:
+        raise InputError(f"{path}: no <VTKFile> element: not a VTK XML file")
+    top = dict(re.findall(r'(\w+)="([^"]*)"', root.group(1)))
+    header_size = 8 if top.get("header_type", "UInt32") == "UInt64" else 4
+    raw = bool(appended) and b'encoding="raw"' in appended.group(0) and "compressor" not in top
+    start = data.find(b"_", appended.end()) + 1 if appended else 0
+    if raw and start == 0:
+        raise InputError(f"{path}: the appended data has no '_' marker: the file is corrupt")
+    points, section = 0, ""
+    for closing, tag, rest in re.findall(r"<(/?)(\w+)([^>]*)>", header):
+        attrs = dict(re.findall(r'(\w+)="([^"]*)"', rest))
+        if tag == "Piece" and not closing:
+            for key in ("NumberOfPoints", "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys"):
+                check_count(path, tag, attrs, key)
+            points = check_count(path, tag, attrs, "NumberOfPoints") or 0
+        elif tag == "DataArray" and not closing:
+            tuples = check_count(path, tag, attrs, "NumberOfTuples")
+            check_count(path, tag, attrs, "NumberOfComponents")
+            offset = check_count(path, tag, attrs, "offset")
+            if raw and attrs.get("format") == "appended" and offset is not None:
+                expected = tuples if section == "FieldData" else points if section in ("Points", "PointData") else None
+                check_appended_array(path, attrs, data, start + offset, header_size, expected)
+        elif tag != "DataArray":
+            section = "" if closing else tag
+
+
+def read_vtp(path):
+    """(points N x 3, {point array name: values}, {field-data name: first value as float})
+    of a particles.vtp, its header checked first; InputError naming the file when it is
+    missing, corrupt or holds no particle. VTK is imported here only, so that the
+    scripts that read no particle file run without it."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: no such file")
+    check_vtp_header(path)
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    if data is None or data.GetNumberOfPoints() == 0 or data.GetPoints() is None:
+        raise InputError(f"{path}: no particles (missing or corrupt file)")
+    points = vtk_to_numpy(data.GetPoints().GetData()).astype(float)
+    fields = {}
+    pd = data.GetPointData()
+    for k in range(pd.GetNumberOfArrays()):
+        fields[pd.GetArrayName(k)] = vtk_to_numpy(pd.GetArray(k)).astype(float)
+    info = {}
+    fd = data.GetFieldData()
+    for k in range(fd.GetNumberOfArrays()):
+        a = fd.GetAbstractArray(k)
+        if a.GetNumberOfTuples() > 0:
+            try:
+                info[a.GetName()] = float(a.GetVariantValue(0).ToDouble())
+            except Exception:
+                pass
+    return points, fields, info
+
+
+def dimension(info):
+    """2 or 3, from the field data of a particles.vtp (read_vtp's third item; 2 without it)."""
+    return 3 if info.get("dimension", 2) == 3 else 2

@@ -13,7 +13,7 @@ deb=$(ls "$tmp"/shizuku_*.deb 2>/dev/null | head -1)
 [ -n "$deb" ] || { cat "$tmp/cpack.log"; fail "no shizuku_*.deb written"; }
 dpkg-deb -c "$deb" | awk '{print $NF}' > "$tmp/contents"
 for f in ./usr/bin/shizuku ./usr/bin/shizukuParticles ./usr/bin/shizukuPostProcess ./usr/bin/shizukuPlot \
-         ./usr/bin/shizukuCompare ./usr/share/shizuku/etc/bashrc ./usr/share/shizuku/etc/tutorialFunctions \
+         ./usr/bin/shizukuCompare ./usr/bin/shizukuPvsm ./usr/share/shizuku/etc/bashrc ./usr/share/shizuku/etc/tutorialFunctions \
          ./usr/share/shizuku/tutorials/damBreak/Allrun ./usr/share/shizuku/tutorials/damBreak/system/controlDict \
          ./usr/share/doc/shizuku/README.md; do
     grep -qx "$f" "$tmp/contents" || fail "$f not in $(basename "$deb")"

@@ -17,7 +17,7 @@ P=$tmp/prefix
 fail() { echo "FAIL: $*"; exit 1; }
 
 cmake --install "$build" --prefix "$P" > "$tmp/install.log" || { cat "$tmp/install.log"; fail "cmake --install"; }
-for f in bin/shizuku bin/shizukuParticles bin/shizukuPostProcess bin/shizukuPlot bin/shizukuCompare; do
+for f in bin/shizuku bin/shizukuParticles bin/shizukuPostProcess bin/shizukuPlot bin/shizukuCompare bin/shizukuPvsm; do
     [ -x "$P/$f" ] || fail "$f not installed (or not executable)"
 done
 for f in share/shizuku/etc/bashrc share/shizuku/etc/tutorialFunctions share/doc/shizuku/README.md \

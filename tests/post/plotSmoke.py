@@ -17,10 +17,6 @@ import sys
 
 import matplotlib.image as mpimg
 import numpy as np
-from vtkmodules.util.numpy_support import numpy_to_vtk
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 import shizukutest as st  # noqa: E402
@@ -40,36 +36,9 @@ def write_vtp(path, t, d0=0.01, raw=False):
     p = 1000 * 9.81 * (ny * d0 - pts[:, 1]) * (1 + t)
     U = np.c_[-pts[:, 1], pts[:, 0], np.zeros(n)]
     rhoN = 1000 * (1 - 0.01 * pts[:, 0] / (nx * d0))
-    poly = vtkPolyData()
-    points = vtkPoints()
-    points.SetData(numpy_to_vtk(pts, deep=True))
-    poly.SetPoints(points)
-    cells = vtkCellArray()
-    for i in range(n):
-        cells.InsertNextCell(1)
-        cells.InsertCellPoint(i)
-    poly.SetVerts(cells)
-    for name, arr in (("U", U), ("p", p), ("rhoN", rhoN), ("type", ptype)):
-        a = numpy_to_vtk(arr, deep=True)
-        a.SetName(name)
-        poly.GetPointData().AddArray(a)
-    for name, value in (("spacing", d0), ("rho0", 1000.0), ("time", t), ("dimension", 2.0)):
-        a = vtkDoubleArray()
-        a.SetName(name)
-        a.InsertNextValue(value)
-        poly.GetFieldData().AddArray(a)
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    w = vtkXMLPolyDataWriter()
-    w.SetFileName(path)
-    w.SetInputData(poly)
-    if raw:  # as Shizuku writes it: raw appended data, UInt64 block headers
-        w.SetDataModeToAppended()
-        w.EncodeAppendedDataOff()
-        w.SetCompressorTypeToNone()
-        w.SetHeaderTypeToUInt64()
-    else:
-        w.SetDataModeToBinary()
-    st.check(w.Write() == 1, f"wrote {path}")
+    # raw: as Shizuku writes it (raw appended data, UInt64 block headers)
+    st.check(st.write_vtp(path, pts, {"U": U, "p": p, "rhoN": rhoN, "type": ptype},
+                          {"spacing": d0, "rho0": 1000.0, "time": t, "dimension": 2.0}, raw), f"wrote {path}")
 
 
 def make_case():

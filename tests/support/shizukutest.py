@@ -1,5 +1,5 @@
 """What the Python test scripts share (docs/testing.md): one assertion and summary
-style, the case-dictionary edits, copying and running a case, and reading particle
+style, the case-dictionary edits, copying and running a case, reading and writing particle
 files and time directories. Every script of tests/ imports it after putting this
 folder on sys.path:
 
@@ -250,6 +250,80 @@ def read_vtp(path):
         if a is not None:
             out["field:" + a.GetName()] = vtk_to_numpy(a).copy()
     return out
+
+
+def write_vtp(path, points, arrays, field_data, raw=False):
+    """Write a hand-made particles.vtp (making its folder): points N x 3, one vertex cell
+    per particle, point arrays {name: numpy values}, field data {name: float}. raw: raw
+    appended data with UInt64 block headers, as Shizuku writes it; else VTK's inline
+    binary. Returns True when VTK wrote it."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+    poly = vtkPolyData()
+    pts = vtkPoints()
+    pts.SetData(numpy_to_vtk(points, deep=True))
+    poly.SetPoints(pts)
+    cells = vtkCellArray()
+    for i in range(len(points)):
+        cells.InsertNextCell(1)
+        cells.InsertCellPoint(i)
+    poly.SetVerts(cells)
+    for name, values in arrays.items():
+        a = numpy_to_vtk(values, deep=True)
+        a.SetName(name)
+        poly.GetPointData().AddArray(a)
+    for name, value in field_data.items():
+        a = vtkDoubleArray()
+        a.SetName(name)
+        a.InsertNextValue(value)
+        poly.GetFieldData().AddArray(a)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    w = vtkXMLPolyDataWriter()
+    w.SetFileName(path)
+    w.SetInputData(poly)
+    if raw:
+        w.SetDataModeToAppended()
+        w.EncodeAppendedDataOff()
+        w.SetCompressorTypeToNone()
+        w.SetHeaderTypeToUInt64()
+    else:
+        w.SetDataModeToBinary()
+    return w.Write() == 1
+
+
+def write_block_case(case, times, n=(10, 6, 5), d0=0.01, raw=True):
+    """A hand-made case of particle files only: at each time a block of nx x ny x nz fluid
+    particles at ((i + 1/2) d0, (j + 1/2) d0, (k + 1/2) d0) over a floor of walls one
+    particle thick at y = -d0/2, one particle wider than the block on each side
+    ((nx + 2) x (nz + 2)); nz = 0 makes it 2D (z = 0, a floor row of nx + 2). Pressure
+    hydrostatic times (1 + t) plus 50 Pa per d0 in x, U = (y, 0, -x) times (1 + t). Writes
+    <time>/particles.vtp and particles.pvd. Returns the fluid and wall positions of the
+    first time (they are the same at every time)."""
+    import numpy as np
+
+    nx, ny, nz = n
+    dim = 3 if nz > 0 else 2
+    g = lambda m, lo=0: (np.arange(lo, m) + 0.5) * d0  # noqa: E731
+    zs, wz = (g(nz), g(nz + 1, -1)) if dim == 3 else (np.zeros(1), np.zeros(1))
+    fluid = np.array(np.meshgrid(g(nx), g(ny), zs, indexing="ij")).reshape(3, -1).T
+    walls = np.array(np.meshgrid(g(nx + 1, -1), [-0.5 * d0], wz, indexing="ij")).reshape(3, -1).T
+    pts = np.vstack([fluid, walls])
+    kind = np.r_[np.zeros(len(fluid)), np.ones(len(walls))].astype(np.uint8)
+    entries = []
+    for t in times:
+        name = f"{t:g}"
+        p = (1000 * 9.81 * (ny * d0 - pts[:, 1]) + 50 * pts[:, 0] / d0) * (1 + t)
+        U = np.c_[pts[:, 1], np.zeros(len(pts)), -pts[:, 0]] * (1 + t)
+        info = {"spacing": d0, "rho0": 1000.0, "time": t, "dimension": float(dim)}
+        if not write_vtp(os.path.join(case, name, "particles.vtp"), pts, {"U": U, "p": p, "type": kind}, info, raw):
+            raise RuntimeError(f"{case}/{name}/particles.vtp: VTK did not write it")
+        entries.append(f'    <DataSet timestep="{name}" group="" part="0" file="{name}/particles.vtp"/>\n')
+    write(os.path.join(case, "particles.pvd"), '<VTKFile type="Collection" version="0.1" byte_order="LittleEndian">'
+          "\n  <Collection>\n" + "".join(entries) + "  </Collection>\n</VTKFile>\n")
+    return fluid, walls
 
 
 def png_picture(path):
