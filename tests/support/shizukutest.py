@@ -180,6 +180,17 @@ def case_arguments(first="case"):
     return ap
 
 
+def full_size_case(name):
+    """The arguments of a tutorial's validation script (case_arguments plus --full), and a
+    fresh copy of the tutorial at WORK/<name> (WORK/<name>Full with --full)."""
+    ap = case_arguments("tutorial")
+    ap.add_argument("--full", action="store_true")
+    a = ap.parse_args()
+    case = os.path.join(os.path.abspath(a.work), name + ("Full" if a.full else ""))
+    copy_case(a.tutorial, case)
+    return a, case
+
+
 def copy_case(src, dst):
     """A fresh copy of a case's system/ and constant/ at dst (emptied first)."""
     shutil.rmtree(dst, ignore_errors=True)

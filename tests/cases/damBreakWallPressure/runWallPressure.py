@@ -42,11 +42,7 @@ GUARD_PEAK1, GUARD_NOISE = 2.0, 0.15
 
 
 def main():
-    ap = st.case_arguments("tutorial")
-    ap.add_argument("--full", action="store_true")
-    a = ap.parse_args()
-    case = os.path.join(os.path.abspath(a.work), "damBreakWallPressureFull" if a.full else "damBreakWallPressure")
-    st.copy_case(a.tutorial, case)
+    a, case = st.full_size_case("damBreakWallPressure")
     if not a.full:
         st.set_key(os.path.join(case, "system", "particlesDict"), "spacing", "2 [cm]")
     st.run_or_fail(a.shizuku, case, a.threads, "damBreakWallPressure")

@@ -34,11 +34,7 @@ GEOMETRY = ["--crest", "0.35", "0.65", "0.05", "--upstream", "0.05", "0.15", "--
 
 
 def main():
-    ap = st.case_arguments("tutorial")
-    ap.add_argument("--full", action="store_true")
-    a = ap.parse_args()
-    case = os.path.join(os.path.abspath(a.work), "weirFull" if a.full else "weir")
-    st.copy_case(a.tutorial, case)
+    a, case = st.full_size_case("weir")
     start = "3"
     if not a.full:
         shutil.copy(os.path.join(HERE, "particlesDict"), os.path.join(case, "system", "particlesDict"))
