@@ -179,7 +179,7 @@ template <int D>
 void readBody(const Dictionary& r, Region<D>& reg, const std::string& kind, double d0, double reach,
               const std::string& caseDir, double limit) {
   if (kind == "stl") {
-    reg.body = readStlRegion<D>(r, d0, reach, caseDir);
+    reg.body = readStlRegion<D>(r, d0, reach, reg.fluid ? 0.0 : d0, caseDir);
   } else if (kind == "cylinder") {
     reg.body = readCylinderRegion<D>(r, D == 3 ? readRadius(r, d0) : 0.0, d0);  // 2D: an error first
   } else {

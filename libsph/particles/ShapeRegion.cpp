@@ -103,7 +103,7 @@ ShapeRegion<D> readCylinderRegion(const Dictionary& r, double radius, double d0)
 }
 
 template <int D>
-ShapeRegion<D> readStlRegion(const Dictionary& r, double d0, double reach, const std::string& caseDir) {
+ShapeRegion<D> readStlRegion(const Dictionary& r, double d0, double reach, double voxel, const std::string& caseDir) {
   if constexpr (D == 2) {
     r.error("shape", "an STL surface is a 3D body; this case is 2D (set `dimension 3;` for a 3D case)");
   } else {
@@ -128,7 +128,7 @@ ShapeRegion<D> readStlRegion(const Dictionary& r, double d0, double reach, const
     }
     checkUnits(r, path, lo, hi, d0);
     auto shape = std::make_shared<StlShape>(TriangleSurface(std::move(mesh.points), std::move(mesh.triangles), reach),
-                                            file, reach);
+                                            file, reach, voxel);
     checkBoxReach<3>(r, "file", *shape, d0);
     return {shape, shape->lower()};
   }
@@ -156,11 +156,12 @@ void rowPoints(const SolidShape<D>& body, Vec<D> p, long lo0, long count0, doubl
   const long i1 = std::min(lo0 + count0 - 1, long(std::floor((to - a0) / d0 - 0.5)));
   if (i1 < i0) return;
   const long n = i1 - i0 + 1;
-  std::vector<double> xs(static_cast<std::size_t>(n)), phi(static_cast<std::size_t>(n));
+  std::vector<double> xs(static_cast<std::size_t>(n));
+  std::vector<char> keep(static_cast<std::size_t>(n));
   for (long j = 0; j < n; ++j) xs[std::size_t(j)] = a0 + (double(i0 + j) + 0.5) * d0;
-  body.phiRow(p, xs.data(), n, phi.data());
+  body.bandRow(p, xs.data(), n, phiMin, phiMax, keep.data());
   for (std::size_t j = 0; j < xs.size(); ++j)
-    if (phi[j] >= phiMin && phi[j] < phiMax) {
+    if (keep[j]) {
       p[0] = xs[j];
       out.push_back(p);
     }
@@ -199,8 +200,8 @@ template ShapeRegion<2> ballRegion<2>(const Vec<2>&, double);
 template ShapeRegion<3> ballRegion<3>(const Vec<3>&, double);
 template ShapeRegion<2> readCylinderRegion<2>(const Dictionary&, double, double);
 template ShapeRegion<3> readCylinderRegion<3>(const Dictionary&, double, double);
-template ShapeRegion<2> readStlRegion<2>(const Dictionary&, double, double, const std::string&);
-template ShapeRegion<3> readStlRegion<3>(const Dictionary&, double, double, const std::string&);
+template ShapeRegion<2> readStlRegion<2>(const Dictionary&, double, double, double, const std::string&);
+template ShapeRegion<3> readStlRegion<3>(const Dictionary&, double, double, double, const std::string&);
 template void checkLatticeRows<2>(const Dictionary&, const std::string&, const ShapeRegion<2>&, double, double);
 template void checkLatticeRows<3>(const Dictionary&, const std::string&, const ShapeRegion<3>&, double, double);
 template void shapeLatticePoints<2>(const ShapeRegion<2>&, double, double, double, std::vector<Vec<2>>&);

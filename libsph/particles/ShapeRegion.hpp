@@ -36,10 +36,11 @@ template <int D>
 ShapeRegion<D> readCylinderRegion(const Dictionary& r, double radius, double d0);
 
 // `shape stl`: the surface read, checked (closed, units) and moved; the lattice from the
-// lower corner of its bounding box. reach: how far phi is exact (StlShape.hpp). caseDir:
-// where a relative `file` is looked for. 2D: an error.
+// lower corner of its bounding box. reach: how far phi is exact; voxel > 0: the side of its
+// phi voxels (a solid wall: d0; StlShape.hpp). caseDir: where a relative `file` is looked
+// for. 2D: an error.
 template <int D>
-ShapeRegion<D> readStlRegion(const Dictionary& r, double d0, double reach, const std::string& caseDir);
+ShapeRegion<D> readStlRegion(const Dictionary& r, double d0, double reach, double voxel, const std::string& caseDir);
 
 // The lattice rows (lines along x) the region's bounding box spans must stay below
 // 10 maxParticles + 1e6 (a thin body lying across the lattice), else an error at `shape`.

@@ -11,8 +11,9 @@
 //   lower(), upper()      the bounding box of the body;
 //   rowSpan       the part of a lattice row (a line along x) that may hold points inside:
 //                 the generator visits only those (O(points), not O(bounding box));
-//   phiRow        phi at several points of one row (a surface that finds the crossings
-//                 of a row once overrides it);
+//   bandRow       which points of one row have phiMin <= phi < phiMax (a surface that
+//                 finds the crossings of a row once, and only needs to know whether a
+//                 triangle lies within a distance, overrides it);
 //   kind()        "solid ball", "solid cylinder", "STL surface '<file>'" for messages;
 //   volume(), shellVolume(depth)  for the particle count before anything is allocated.
 // One class per shape: BallShape.hpp (circle, sphere), CylinderShape.hpp, StlShape.hpp.
@@ -46,12 +47,14 @@ class SolidShape {
     hi = upper_[0] + margin;
     return true;
   }
-  // out[j] = phi at rowPoint with x = xs[j], j < n.
-  virtual void phiRow(const Vec<D>& rowPoint, const double* xs, long n, double* out) const {
+  // keep[j] = phiMin <= phi < phiMax at rowPoint with x = xs[j], j < n.
+  virtual void bandRow(const Vec<D>& rowPoint, const double* xs, long n, double phiMin, double phiMax,
+                       char* keep) const {
     Vec<D> x = rowPoint;
     for (long j = 0; j < n; ++j) {
       x[0] = xs[j];
-      out[j] = phi(x);
+      const double p = phi(x);
+      keep[j] = p >= phiMin && p < phiMax;
     }
   }
 

@@ -77,17 +77,30 @@ TriangleSurface::TriangleSurface(std::vector<Vec<3>> vertices, std::vector<Trian
     const Vec<3>&a = v_[std::size_t(t[0])], &b = v_[std::size_t(t[1])], &c = v_[std::size_t(t[2])];
     area_ += 0.5 * (b - a).cross(c - a).norm();
     volume_ += a.dot(b.cross(c)) / 6;
+    centre_.push_back((a + b + c) / 3);
+    radius_.push_back(std::sqrt(std::max({(a - centre_.back()).squaredNorm(), (b - centre_.back()).squaredNorm(),
+                                          (c - centre_.back()).squaredNorm()})));
   }
   volume_ = std::abs(volume_);
   const Vec<3> extent = hi_ - lo_;
   cell_ = std::max({cell, std::cbrt(extent.prod() / kMaxCells), 1e-300});
   for (int k = 0; k < 3; ++k) n_[k] = std::max(1L, long(std::ceil(extent[k] / cell_)));
+  double edges = 0;
+  for (const auto& t : tri_)
+    for (int e = 0; e < 3; ++e) edges += (v_[std::size_t(t[std::size_t(e)])] - v_[std::size_t(t[std::size_t((e + 1) % 3)])]).norm();
+  const double meanEdge = tri_.empty() ? 0 : edges / double(3 * tri_.size());
+  column_ = std::max({2 * meanEdge, std::sqrt(extent[1] * extent[2] / kMaxCells), 1e-300});
+  for (int k = 1; k < 3; ++k) m_[k] = std::max(1L, long(std::ceil(extent[k] / column_)));
   binCells();
   binColumns();
 }
 
 long TriangleSurface::cellOf(double x, int k) const {
   return std::clamp(long(std::floor((x - lo_[k]) / cell_)), 0L, n_[k] - 1);
+}
+
+long TriangleSurface::columnOf(double x, int k) const {
+  return std::clamp(long(std::floor((x - lo_[k]) / column_)), 0L, m_[k] - 1);
 }
 
 // Each triangle goes into the cells of its bounding box whose centre lies within half a
@@ -121,12 +134,12 @@ void TriangleSurface::binColumns() {
   std::vector<std::pair<long, int>> pairs;
   for (std::size_t t = 0; t < tri_.size(); ++t) {
     const Vec<3>&a = v_[std::size_t(tri_[t][0])], &b = v_[std::size_t(tri_[t][1])], &c = v_[std::size_t(tri_[t][2])];
-    const long y0 = cellOf(std::min({a[1], b[1], c[1]}), 1), y1 = cellOf(std::max({a[1], b[1], c[1]}), 1);
-    const long z0 = cellOf(std::min({a[2], b[2], c[2]}), 2), z1 = cellOf(std::max({a[2], b[2], c[2]}), 2);
+    const long y0 = columnOf(std::min({a[1], b[1], c[1]}), 1), y1 = columnOf(std::max({a[1], b[1], c[1]}), 1);
+    const long z0 = columnOf(std::min({a[2], b[2], c[2]}), 2), z1 = columnOf(std::max({a[2], b[2], c[2]}), 2);
     for (long z = z0; z <= z1; ++z)
-      for (long y = y0; y <= y1; ++y) pairs.emplace_back(z * n_[1] + y, int(t));
+      for (long y = y0; y <= y1; ++y) pairs.emplace_back(z * m_[1] + y, int(t));
   }
-  toCsr(pairs, n_[1] * n_[2], columnStart_, columnTri_);
+  toCsr(pairs, m_[1] * m_[2], columnStart_, columnTri_);
 }
 
 // f(x) for every crossing of the line (., y, z) with a triangle: the perturbed point lies on
@@ -134,7 +147,7 @@ void TriangleSurface::binColumns() {
 template <class F>
 void TriangleSurface::forEachCrossing(double y, double z, F&& f) const {
   if (!(y >= lo_[1] && y <= hi_[1] && z >= lo_[2] && z <= hi_[2])) return;
-  const long column = cellOf(z, 2) * n_[1] + cellOf(y, 1);
+  const long column = columnOf(z, 2) * m_[1] + columnOf(y, 1);
   const Vec<2> p(y, z);
   for (long i = columnStart_[std::size_t(column)]; i < columnStart_[std::size_t(column) + 1]; ++i) {
     const Triangle& t = tri_[std::size_t(columnTri_[std::size_t(i)])];
@@ -160,23 +173,53 @@ void TriangleSurface::crossings(double y, double z, std::vector<double>& xs) con
   std::sort(xs.begin(), xs.end());
 }
 
-double TriangleSurface::distance(const Vec<3>& x, double reach) const {
+// f(t) for the triangles t of the cells within r of x (the cell holding x first; a
+// triangle in several cells comes several times) until f returns true; whether it did.
+template <class F>
+bool TriangleSurface::forEachNear(const Vec<3>& x, double r, F&& f) const {
   for (int k = 0; k < 3; ++k)
-    if (!(x[k] >= lo_[k] - reach && x[k] <= hi_[k] + reach)) return reach;
+    if (!(x[k] >= lo_[k] - r && x[k] <= hi_[k] + r)) return false;
   std::array<long, 3> i0, i1;
   for (int k = 0; k < 3; ++k) {
-    i0[k] = cellOf(x[k] - reach, k);
-    i1[k] = cellOf(x[k] + reach, k);
+    i0[k] = cellOf(x[k] - r, k);
+    i1[k] = cellOf(x[k] + r, k);
   }
-  double best = reach * reach;
+  auto visit = [&](long c) {
+    for (long i = cellStart_[std::size_t(c)]; i < cellStart_[std::size_t(c) + 1]; ++i)
+      if (f(cellTri_[std::size_t(i)])) return true;
+    return false;
+  };
+  const long own = (cellOf(x[2], 2) * n_[1] + cellOf(x[1], 1)) * n_[0] + cellOf(x[0], 0);
+  if (visit(own)) return true;
   for (long z = i0[2]; z <= i1[2]; ++z)
     for (long y = i0[1]; y <= i1[1]; ++y)
       for (long c = (z * n_[1] + y) * n_[0] + i0[0], end = c + i1[0] - i0[0]; c <= end; ++c)
-        for (long i = cellStart_[std::size_t(c)]; i < cellStart_[std::size_t(c) + 1]; ++i) {
-          const Triangle& t = tri_[std::size_t(cellTri_[std::size_t(i)])];
-          best = std::min(best, triangleDistance2(x, v_[std::size_t(t[0])], v_[std::size_t(t[1])], v_[std::size_t(t[2])]));
-        }
+        if (c != own && visit(c)) return true;
+  return false;
+}
+
+double TriangleSurface::sphereGap(const Vec<3>& x, int t) const {
+  return (x - centre_[std::size_t(t)]).norm() - radius_[std::size_t(t)];
+}
+
+double TriangleSurface::distance(const Vec<3>& x, double reach) const {
+  double best = reach * reach;
+  forEachNear(x, reach, [&](int i) {
+    const double gap = sphereGap(x, i);
+    if (gap > 0 && gap * gap >= best) return false;
+    const Triangle& t = tri_[std::size_t(i)];
+    best = std::min(best, triangleDistance2(x, v_[std::size_t(t[0])], v_[std::size_t(t[1])], v_[std::size_t(t[2])]));
+    return false;
+  });
   return std::sqrt(best);
+}
+
+bool TriangleSurface::anyWithin(const Vec<3>& x, double r) const {
+  return forEachNear(x, r, [&](int i) {
+    if (sphereGap(x, i) > r) return false;
+    const Triangle& t = tri_[std::size_t(i)];
+    return triangleDistance2(x, v_[std::size_t(t[0])], v_[std::size_t(t[1])], v_[std::size_t(t[2])]) <= r * r;
+  });
 }
 
 }  // namespace shizuku

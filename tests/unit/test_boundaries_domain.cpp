@@ -222,6 +222,9 @@ BOOST_AUTO_TEST_CASE(leaksThroughCurvedAndStlSolids) {
   const auto cube = test::boxMesh(Vec<3>(0.4, 0.4, 0.4), Vec<3>(0.6, 0.6, 0.6));
   const auto stl = std::make_shared<StlShape>(TriangleSurface(cube.v, cube.t, 0.04), "cube.stl", 0.04);
   checkBodyLeak<3>(bodyWall<3>("cube", stl), Vec<3>(0.53, 0.47, 0.6), Vec<3>(0, 0, -1), "STL surface 'cube.stl'");
+  // The same with its phi voxels (a solid wall's, as the generator builds it).
+  const auto voxels = std::make_shared<StlShape>(TriangleSurface(cube.v, cube.t, 0.04), "cube.stl", 0.04, 0.01);
+  checkBodyLeak<3>(bodyWall<3>("cube", voxels), Vec<3>(0.53, 0.47, 0.6), Vec<3>(0, 0, -1), "STL surface 'cube.stl'");
 }
 
 BOOST_AUTO_TEST_CASE(domainOfSolids) {

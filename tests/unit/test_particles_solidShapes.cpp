@@ -2,7 +2,7 @@
 // docs/boundaries.md, "Curved and STL solids"), in 2D and 3D where the shape exists:
 // phi of a ball and a cylinder by hand; the triangulated surface's inside test and
 // distance against a box and an octahedron in closed form (rays through vertices and along
-// edges included); fluid cylinders counted by hand and against a
+// edges included); the voxel shortcut of an STL solid against its exact test; fluid cylinders counted by hand and against a
 // brute-force inside test; the layers of solid discs, balls and cylinders (caps included)
 // against the lattice points of the shell found by brute force; fluid kept outside a solid
 // ball and removed inside; STL cubes (ASCII and binary) giving the particles of the
@@ -15,6 +15,7 @@
 #include "particles/BallShape.hpp"
 #include "particles/CylinderShape.hpp"
 #include "particles/ParticleGenerator.hpp"
+#include "particles/StlShape.hpp"
 #include "particles/TriangleSurface.hpp"
 #include "../support/ErrorOf.hpp"
 #include "../support/StlFiles.hpp"
@@ -140,8 +141,9 @@ BOOST_AUTO_TEST_CASE(phi_of_ball_and_cylinder_by_hand) {
 }
 
 BOOST_AUTO_TEST_CASE(triangle_surface_inside_and_distance) {
-  // The box [0, 1]^3 of 12 triangles: inside, and the distance (searched within 0.5) against
-  // the box's own: outside |max(|x - m| - 1/2, 0)|, inside 1/2 - max |x_k - m_k| (m its centre).
+  // The box [0, 1]^3 of 12 triangles: inside, the distance (searched within 0.5) and whether
+  // a triangle lies within 0.1, against the box's own distance: outside
+  // |max(|x - m| - 1/2, 0)|, inside 1/2 - max |x_k - m_k| (m its centre).
   const auto cube = test::boxMesh(Vec<3>(0, 0, 0), Vec<3>(1, 1, 1));
   const TriangleSurface box(cube.v, cube.t, 0.25);
   BOOST_TEST(box.volume() == 1.0, boost::test_tools::tolerance(1e-14));
@@ -161,6 +163,7 @@ BOOST_AUTO_TEST_CASE(triangle_surface_inside_and_distance) {
     inside += d.maxCoeff() < 0;
     wrongSide += box.inside(x) != (d.maxCoeff() < 0);
     worst = std::max(worst, std::abs(box.distance(x, 0.5) - std::min(exact, 0.5)));
+    if (std::abs(exact - 0.1) > 1e-12) wrongSide += box.anyWithin(x, 0.1) != (exact <= 0.1);
   }
   BOOST_TEST(inside > 1000u);
   BOOST_TEST(wrongSide == 0u);
@@ -213,6 +216,31 @@ BOOST_AUTO_TEST_CASE(triangle_surface_inside_and_distance) {
     }
   BOOST_TEST(rows == 3 * 10 * sphere.t.size());
   BOOST_TEST(odd == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(voxel_shortcut_agrees_with_the_exact_test) {
+  // deeperThan with the phi voxels (a solid wall's, PhiGrid.hpp) and without them, at
+  // random points of the bounding box and beyond, for the depths the generator (round-off)
+  // and the leak detector (d0/2) ask about and two more.
+  const auto sphere = test::uvSphere(Vec<3>(0.013, 0.027, -0.011), 0.1, 12, 24);
+  const double d0 = 0.01;
+  const StlShape exact(TriangleSurface(sphere.v, sphere.t, 4 * d0), "ball.stl", 4 * d0);
+  const StlShape voxels(TriangleSurface(sphere.v, sphere.t, 4 * d0), "ball.stl", 4 * d0, d0);
+  BOOST_TEST(voxels.hasGrid());
+  BOOST_TEST(!exact.hasGrid());
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(-0.13, 0.13);
+  std::size_t differ = 0, deep = 0;
+  for (int n = 0; n < 40000; ++n) {
+    const Vec<3> x = Vec<3>(0.013, 0.027, -0.011) + Vec<3>(u(random), u(random), u(random));
+    for (double depth : {1e-9 * d0, 0.5 * d0, 2 * d0, 3.5 * d0}) {
+      const bool e = exact.deeperThan(x, depth);
+      differ += e != voxels.deeperThan(x, depth);
+      deep += e;
+    }
+  }
+  BOOST_TEST(deep > 10000u);
+  BOOST_TEST(differ == 0u);
 }
 
 BOOST_AUTO_TEST_CASE(fluid_cylinder_by_hand_and_by_brute_force) {
