@@ -624,10 +624,12 @@ void fillWalls(std::vector<Region<D>>& walls, double d0, std::vector<Vec<D>>& wa
   }
 }
 
+namespace {
 [[noreturn]] void overlapError(const Dictionary& regionsDict, const std::string& earlier, const std::string& later) {
   regionsDict.error(later, "fluid region '" + later + "' overlaps fluid region '" + earlier + "' (" +
                                regionsDict.location(earlier).str() + ")");
 }
+}  // namespace
 
 // Whether x lies strictly inside the shape of fluid region f.
 template <int D>

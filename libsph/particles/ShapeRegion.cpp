@@ -39,13 +39,13 @@ namespace {
 constexpr double kMaxSpacingsFromOrigin = 1e12;  // as the generator: lattice indices stay exact
 constexpr double kSmallestPart = 2, kLargestPart = 1e5;  // spacings across, for the units check
 
-// The bounding box of a shape must lie within kMaxSpacingsFromOrigin spacings of the origin.
+// The bounding box [lo, hi] of a body must lie within kMaxSpacingsFromOrigin spacings of the origin.
 template <int D>
-void checkBoxReach(const Dictionary& r, const std::string& key, const SolidShape<D>& s, double d0) {
+void checkBoxReach(const Dictionary& r, const std::string& key, const Vec<D>& lo, const Vec<D>& hi, double d0) {
   for (int k = 0; k < D; ++k)
-    if (!(std::max(std::abs(s.lower()[k]), std::abs(s.upper()[k])) / d0 <= kMaxSpacingsFromOrigin))
-      r.error(key, "the body reaches " + formatNumber<D>(s.lower()) + " .. " + formatNumber<D>(s.upper()) +
-                       ", more than " + formatNumber(kMaxSpacingsFromOrigin) + " spacings (d0 = " + formatNumber(d0) +
+    if (!(std::max(std::abs(lo[k]), std::abs(hi[k])) / d0 <= kMaxSpacingsFromOrigin))
+      r.error(key, "the body reaches " + formatNumber<D>(lo) + " .. " + formatNumber<D>(hi) + ", more than " +
+                       formatNumber(kMaxSpacingsFromOrigin) + " spacings (d0 = " + formatNumber(d0) +
                        " m) from the origin");
 }
 
@@ -62,10 +62,11 @@ Mat<3> readRotation(const Dictionary& r) {
 }
 
 // A part under 2 d0 or over 1e5 d0 across in every direction was drawn in other units.
-void checkUnits(const Dictionary& r, const std::string& path, const Vec<3>& lo, const Vec<3>& hi, double d0) {
+void checkUnits(const Dictionary& r, const std::string& path, const Vec<3>& lo, const Vec<3>& hi, double scale,
+                double d0) {
   const Vec<3> size = hi - lo;
   const std::string across = "the part is " + formatNumber<3>(size) + " m across (after scale " +
-                             formatNumber(key::scale.read(r)) + ")";
+                             formatNumber(scale) + ")";
   const std::string spacing = " spacings (d0 = " + formatNumber(d0) + " m) in every direction: wrong units? ";
   if ((size.array() < kSmallestPart * d0).all())
     r.error("file", "'" + path + "': " + across + ", less than " + formatNumber(kSmallestPart) + spacing +
@@ -97,7 +98,7 @@ ShapeRegion<D> readCylinderRegion(const Dictionary& r, double radius, double d0)
     if (!((p2 - p1).norm() > 1e-9 * d0))
       r.error("point2", "coincides with point1 " + formatNumber<3>(p1) + ": the cylinder has no length");
     ShapeRegion<3> s{std::make_shared<CylinderShape>(p1, p2, radius), p1};
-    checkBoxReach<3>(r, "point2", *s.shape, d0);
+    checkBoxReach<3>(r, "point2", s.shape->lower(), s.shape->upper(), d0);
     return s;
   }
 }
@@ -126,10 +127,10 @@ ShapeRegion<D> readStlRegion(const Dictionary& r, double d0, double reach, doubl
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
     }
-    checkUnits(r, path, lo, hi, d0);
+    checkUnits(r, path, lo, hi, scale, d0);
+    checkBoxReach<3>(r, "file", lo, hi, d0);
     auto shape = std::make_shared<StlShape>(TriangleSurface(std::move(mesh.points), std::move(mesh.triangles), reach),
                                             file, reach, voxel);
-    checkBoxReach<3>(r, "file", *shape, d0);
     return {shape, shape->lower()};
   }
 }

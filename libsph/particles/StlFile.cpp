@@ -1,6 +1,7 @@
 // Reading an STL file through VTK: see StlFile.hpp.
 #include "particles/StlFile.hpp"
 #include "particles/VtkMessages.hpp"
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <vtkCellArray.h>
@@ -14,6 +15,15 @@
 namespace shizuku {
 
 namespace {
+
+// VTK's first message, its first line, at most 200 characters (what follows is the
+// pipeline's failure and a dump of its state; a parse error quotes the file).
+std::string vtkSays(const std::string& text) {
+  if (text.empty()) return "";
+  std::string line = text.substr(0, std::min(text.find('\n'), text.find("; ")));  // VtkMessages joins with "; "
+  if (line.size() > 200) line = line.substr(0, 200) + "...";
+  return " (VTK: " + line + ")";
+}
 
 // The edges used by one triangle or by more than two.
 long countOpenEdges(vtkPolyData* surface) {
@@ -44,7 +54,7 @@ std::string readStl(const std::string& path, StlMesh& mesh) {
   reader->SetFileName(path.c_str());
   reader->Update();
   vtkPolyData* surface = reader->GetOutput();
-  const std::string vtk = messages->text.empty() ? "" : " (VTK: " + messages->text + ")";
+  const std::string vtk = vtkSays(messages->text);
   if (!surface || !surface->GetPolys() || surface->GetPolys()->GetNumberOfCells() == 0)
     return "holds no triangle: not an STL file, or an empty solid" + vtk;
   if (!messages->text.empty()) return "could not be read" + vtk;
