@@ -2,6 +2,7 @@
 #include "boundaries/Domain.hpp"
 #include "core/Log.hpp"
 #include "core/Parameter.hpp"
+#include <algorithm>
 
 namespace shizuku {
 
@@ -46,7 +47,7 @@ Domain<D> Domain<D>::read(const Dictionary& controlDict, const std::vector<WallB
         dict->error("max", cat("the domain's max must exceed its min in every direction (", "xyz"[k], ": min ",
                                d.min_[k], ", max ", d.max_[k], ")"));
     d.describe_ = cat(box<D>(d.min_, d.max_), " (controlDict domain)");
-  } else if (!walls.empty()) {
+  } else if (std::any_of(walls.begin(), walls.end(), [](const WallBox<D>& w) { return !w.solid; })) {
     Vec<D> lo, hi;
     wallBounds(walls[0], lo, hi);
     for (const auto& w : walls) {

@@ -1,12 +1,14 @@
 // The domain of a run (docs/boundaries.md, "Domain, outflow and leaks"): the box a fluid
 // particle must stay in; one that leaves it is removed (isph/Outflow), not a failure.
 //   - `domain { min (..); max (..); }` in system/controlDict: that box;
-//   - else, where the case has walls: the union of every wall's bounds, each wall box
-//     (its surface grown by its layers) extended beyond each OPEN face by the box's own
-//     size in that direction, so that spray rising above an open top falls back in
-//     while a droplet that falls outside the tank leaves;
-//   - else unbounded (only the speed and non-finite guards apply).
-// A wall kind adds its bounds through addWall (boxes today).
+//   - else, where the case has a container wall (a wall box without `solid yes`): the
+//     union of every wall's bounds, each wall box (its surface grown by its layers)
+//     extended beyond each OPEN face by the box's own size in that direction, so that
+//     spray rising above an open top falls back in while a droplet that falls outside the
+//     tank leaves; a solid (a solid box, a curved or STL body) bounds its own box;
+//   - else unbounded (only the speed and non-finite guards apply): solids alone hold no
+//     fluid, and the fluid around them may go anywhere.
+// A wall kind adds its bounds through wallBounds (its outer box).
 // Errors (InputError naming file, line, keyword): min >= max in some direction, or a
 // domain that does not hold every fluid particle of the initial state.
 // Reads (system/controlDict): domain { min; max; } (m), declared in Domain.cpp.
@@ -49,7 +51,7 @@ class Domain {
  private:
   bool bounded_ = false;
   Vec<D> min_ = Vec<D>::Zero(), max_ = Vec<D>::Zero();
-  std::string describe_ = "unbounded (no walls, no controlDict domain)";
+  std::string describe_ = "unbounded (no container wall, no controlDict domain)";
 };
 
 }  // namespace shizuku

@@ -6,8 +6,9 @@
 namespace shizuku {
 
 const char* faceLabel(int face) {
-  static const char* names[6] = {"left (-x)", "right (+x)", "bottom (-y)", "top (+y)", "front (-z)", "back (+z)"};
-  return face >= 0 && face < 6 ? names[face] : "?";
+  static const char* names[7] = {"left (-x)", "right (+x)", "bottom (-y)", "top (+y)", "front (-z)", "back (+z)",
+                                 "surface (of a curved or STL solid)"};
+  return face >= 0 && face <= kBodySurface ? names[face] : "?";
 }
 
 // Whether the segment from -> to passes through the layers of closed face `face`: one end
@@ -64,7 +65,9 @@ void LeakDetector<D>::find(const ParticleSet<D>& p, const std::vector<Vec<D>>& p
 
 template <int D>
 std::string LeakDetector<D>::describe(const Leak& l) const {
-  return cat("wall '", walls_[std::size_t(l.wall)].name, "', face ", faceLabel(l.face));
+  const WallBox<D>& w = walls_[std::size_t(l.wall)];
+  if (w.body) return cat("wall '", w.name, "' (", w.body->kind(), ")");
+  return cat("wall '", w.name, "', face ", faceLabel(l.face));
 }
 
 template class LeakDetector<2>;

@@ -7,7 +7,9 @@
 // its capacity. Open faces are not checked (fluid may leave through them). A solid wall
 // box (an obstacle) is checked for the first condition only: crossing it in one step
 // would take a move longer than its thickness, which the Courant limit (0.2 h) forbids
-// for any obstacle thicker than a spacing.
+// for any obstacle thicker than a spacing. So is a curved or STL solid (WallBox::body):
+// a particle inside it with phi < -d0/2 (past its first layer) is a leak through its
+// surface; only particles in its bounding box evaluate phi.
 // Reads no dictionary keys (the walls come from particlesDict through the generator).
 #pragma once
 #include "particles/NeighbourList.hpp"
@@ -21,7 +23,7 @@ namespace shizuku {
 struct Leak {
   Index particle = 0;   // index in the particle arrays
   int wall = 0;         // index in walls()
-  int face = 0;         // 2k (-x_k) or 2k + 1 (+x_k)
+  int face = 0;         // 2k (-x_k) or 2k + 1 (+x_k); kBodySurface for a curved or STL solid
   bool crossed = false; // crossed the layers in one step (else: found inside them)
 };
 
@@ -35,7 +37,7 @@ class LeakDetector {
   // earlier, same order (empty: the crossing test is skipped). Sorted by particle.
   void find(const ParticleSet<D>& p, const std::vector<Vec<D>>& previous, const PeriodicBox<D>& periodic,
             std::vector<Leak>& leaks) const;
-  // "wall 'tank', face left (-x)".
+  // "wall 'tank', face left (-x)"; "wall 'pier' (solid cylinder)".
   std::string describe(const Leak& l) const;
 
  private:
@@ -43,7 +45,8 @@ class LeakDetector {
   std::vector<WallBox<D>> walls_;
 };
 
-// "left (-x)", "right (+x)", "bottom (-y)", "top (+y)", "front (-z)", "back (+z)".
+// "left (-x)", "right (+x)", "bottom (-y)", "top (+y)", "front (-z)", "back (+z)", and
+// "surface (of a curved or STL solid)" for kBodySurface.
 const char* faceLabel(int face);
 
 }  // namespace shizuku

@@ -56,6 +56,8 @@ WallPressure<D>::WallPressure(const std::string& name, const Dictionary& dict, c
                            near.empty() ? std::string() : cat("; did you mean '", near, "'?")));
   }
   wall_ = walls[std::size_t(it - names.begin())];
+  if (wall_.body)
+    dict.error("wall", cat("wall '", wallName, "' is a ", wall_.body->kind(), "; a sensor sits on a face of a wall box"));
   if (wall_.layers < 2)
     dict.error("wall", cat("wall '", wallName, "' has ", wall_.layers, " layer(s); the sensor extrapolates from the "
                            "first two layers to the face: give it layers 2 or more"));

@@ -4,6 +4,7 @@
 #include "io/RestartChecks.hpp"
 #include "io/TimeName.hpp"
 #include "io/VtpLayout.hpp"
+#include "particles/VtkMessages.hpp"
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -27,23 +28,6 @@
 namespace shizuku {
 
 namespace {
-
-// Collects VTK error and warning messages of one reader or writer, so they end
-// up in our exception instead of on stderr.
-class MessageCapture : public vtkCommand {
- public:
-  static MessageCapture* New() { return new MessageCapture; }
-  void Execute(vtkObject*, unsigned long, void* data) override {
-    if (!data) return;
-    std::string m = static_cast<const char*>(data);
-    while (!m.empty() && (m.back() == '\n' || m.back() == ' ')) m.pop_back();
-    auto cut = m.rfind("): ");  // drop "ERROR: In file, line N\nvtkClass (0x..): "
-    if (cut != std::string::npos) m = m.substr(cut + 3);
-    if (!text.empty()) text += "; ";
-    text += m;
-  }
-  std::string text;
-};
 
 // A one-component VTK array of class A (whose value type is T) holding a copy of v.
 template <class A, class T>
@@ -201,7 +185,7 @@ class FieldValues {
 // VTK reads the file the pre-scan (VtpLayout.hpp) has passed.
 vtkSmartPointer<vtkPolyData> readPolyData(const std::string& path, const VtpLayout& layout) {
   vtkNew<vtkXMLPolyDataReader> r;
-  vtkNew<MessageCapture> messages;
+  vtkNew<VtkMessages> messages;
   r->AddObserver(vtkCommand::ErrorEvent, messages);
   r->AddObserver(vtkCommand::WarningEvent, messages);
   r->SetReaderErrorObserver(messages);
@@ -270,7 +254,7 @@ void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState&
 
   fileops::failurePoint("write vtp", path);
   vtkNew<vtkXMLPolyDataWriter> w;
-  vtkNew<MessageCapture> messages, pipeline;
+  vtkNew<VtkMessages> messages, pipeline;
   w->AddObserver(vtkCommand::ErrorEvent, messages);
   w->AddObserver(vtkCommand::WarningEvent, messages);
   // The pipeline repeats a failed write as a multi-line dump ("Algorithm ...

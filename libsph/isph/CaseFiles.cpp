@@ -40,7 +40,7 @@ int caseDimension(const std::string& caseDir) {
     for (const auto& name : regions->keys()) {
       if (!regions->isDict(name)) continue;
       const Dictionary& r = regions->subDict(name);
-      for (const char* key : {"min", "centre"})
+      for (const char* key : {"min", "centre", "point1"})
         if (r.found(key)) {
           const DictValue& v = r.value(key);
           if (v.kind == DictValue::Kind::list && (v.items.size() == 2 || v.items.size() == 3))

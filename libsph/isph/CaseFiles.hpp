@@ -20,7 +20,8 @@ struct CaseFiles {
 };
 
 // Spatial dimension of a case: `dimension` in system/particlesDict, else the
-// number of components of the first region's `min` or `centre`.
+// number of components of the first region's `min`, `centre` or `point1` (an STL-only
+// case without `dimension` is 2D, and its STL region an error saying so).
 int caseDimension(const std::string& caseDir);
 
 }  // namespace shizuku

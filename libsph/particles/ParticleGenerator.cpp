@@ -1,6 +1,7 @@
 // Builds the initial particle set from system/particlesDict: fluid boxes and
 // circles on the lattice (i + 1/2) d0, wall boxes with `layers` rows outside
-// the wall surface (docs/method.md 11), removal of fluid that overlaps walls (a
+// the wall surface (docs/method.md 11), curved and STL regions through their
+// SolidShape (ShapeRegion.hpp), removal of fluid that overlaps walls (a
 // cell grid, O(N)), the check that the fluid left lies inside the walls,
 // initial velocities (uniform, rigid rotation, linear, muParser expression),
 // and the periodic box. Every rule and key is listed in
@@ -9,6 +10,7 @@
 #include "particles/MemoryCheck.hpp"
 #include "particles/OpenBoundaryRegion.hpp"
 #include "particles/PointGrid.hpp"
+#include "particles/ShapeRegion.hpp"
 #include "particles/VelocityExpression.hpp"
 #include "particles/WallLattice.hpp"
 #include "core/Log.hpp"
@@ -16,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <unordered_map>
 
@@ -47,17 +50,19 @@ const IntParameter dimensionKey = particles.integer("dimension", "2 or 3; select
 const ParameterGroup region("system/particlesDict: regions/<name>", "One fluid or wall region (in file order).");
 const OptionParameter regionType = region.option("type", {"fluid", "wall", "inlet", "outlet"},
     "fluid particles, wall layers, or an inlet's or outlet's buffer (docs/boundaries.md)").required();
-const OptionParameter shape = region.option("shape", {"box", "circle", "sphere"},
-    "box (fluid and wall), circle or sphere (fluid)").required();
+const OptionParameter shape = region.option("shape", {"box", "circle", "sphere", "cylinder", "stl"},
+    "box; circle, sphere (a disc, a ball); cylinder, stl (3D): fluid inside, or as a wall a solid body").required();
 const VectorParameter boxMin = region.vector("min", dim::length, "box: lower corner (wall: inner surface)").required();
 const VectorParameter boxMax = region.vector("max", dim::length, "box: upper corner (wall: inner surface)").required();
 const VectorParameter centre = region.vector("centre", dim::length, "circle, sphere: centre").required();
-const ScalarParameter radius = region.scalar("radius", dim::length, "circle, sphere: radius").required().above(0);
-const IntParameter layers = region.integer("layers", "wall: rows of particles outside the surface").def(3).min(1);
+const ScalarParameter radius = region.scalar("radius", dim::length, "circle, sphere, cylinder: radius").required().above(0);
+const IntParameter layers = region.integer("layers",
+    "wall: rows of particles outside the surface (a solid's: inside it, within layers d0)").def(3).min(1);
 const WordListParameter openFaces = region.wordList("open", "wall: faces without layers (left right bottom top front back)")
     .def("() (every face closed)");
 const SwitchParameter solid = region.onOff("solid",
-    "wall box: a solid body (an obstacle): layers inside the box behind its faces, fluid outside").def(false);
+    "wall box: a solid body (an obstacle): layers inside the box behind its faces, fluid outside "
+    "(a circle, sphere, cylinder or stl wall always is one)").def(false);
 
 const ParameterGroup velocity("system/particlesDict: regions/<name>/velocity",
     "Initial velocity of a fluid region (absent: at rest).");
@@ -86,6 +91,7 @@ struct Region {
   const Dictionary* dict = nullptr;
   bool fluid = true, circle = false;
   bool solid = false;                     // wall: an obstacle (layers inside the box), not a container
+  ShapeRegion<D> body;                    // cylinder, stl; a wall circle or sphere (solid); else no shape
   Vec<D> min = Vec<D>::Zero(), max = Vec<D>::Zero();  // fluid box: the filled cells; wall: its surface
   Vec<D> centre = Vec<D>::Zero();
   double radius = 0;
@@ -97,8 +103,9 @@ struct Region {
   std::vector<Vec<D>> points;
 
   // Inside the wall's layer region: within the grown box, not strictly inside the surface
-  // (a container); strictly inside the box (a solid).
+  // (a container); strictly inside the box (a solid box); phi < -tol (a curved or STL solid).
   bool inLayers(const Vec<D>& x, double tol) const {
+    if (body.shape) return body.shape->deeperThan(x, tol);
     if (solid) {
       for (int k = 0; k < D; ++k)
         if (x[k] <= min[k] + tol || x[k] >= max[k] - tol) return false;
@@ -158,13 +165,54 @@ Region<D> newRegion(const Dictionary& r, const std::string& name, bool fluid) {
   return reg;
 }
 
+// `radius`, at most kMaxSpacingsFromOrigin spacings.
+double readRadius(const Dictionary& r, double d0) {
+  const double R = radius.read(r);
+  if (!(R / d0 <= kMaxSpacingsFromOrigin))
+    r.error("radius", fmt(R) + " m is more than " + fmt(kMaxSpacingsFromOrigin) + " spacings");
+  return R;
+}
+
+// A curved or STL region (ShapeRegion.hpp): its shape and lattice; min, max (and outerMin,
+// outerMax) its bounding box. reach: how far an STL surface's phi must be exact.
+template <int D>
+void readBody(const Dictionary& r, Region<D>& reg, const std::string& kind, double d0, double reach,
+              const std::string& caseDir, double limit) {
+  if (kind == "stl") {
+    reg.body = readStlRegion<D>(r, d0, reach, reg.fluid ? 0.0 : d0, caseDir);
+  } else if (kind == "cylinder") {
+    reg.body = readCylinderRegion<D>(r, D == 3 ? readRadius(r, d0) : 0.0, d0);  // 2D: an error first
+  } else {
+    reg.centre = centre.read<D>(r);
+    checkReach<D>(r, "centre", reg.centre, d0);
+    reg.radius = readRadius(r, d0);
+    reg.body = ballRegion<D>(reg.centre, reg.radius);
+  }
+  checkLatticeRows<D>(r, reg.name, reg.body, d0, limit);
+  reg.min = reg.outerMin = reg.body.shape->lower();
+  reg.max = reg.outerMax = reg.body.shape->upper();
+}
+
+// About the lattice points of a curved or STL region: its volume (fluid), its layer's
+// volume (wall) over d0^D.
+template <int D>
+double bodyCount(const Region<D>& reg, double d0) {
+  const SolidShape<D>& s = *reg.body.shape;
+  return (reg.fluid ? s.volume() : s.shellVolume(reg.layers * d0)) / std::pow(d0, D);
+}
+
 template <int D>
 Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
-                    double limit) {
+                    double limit, const std::string& caseDir) {
   Region<D> reg = newRegion<D>(r, name, true);
   for (const char* k : {"layers", "open"})
     if (hasKey<D>(r, k)) r.error(k, std::string("only wall regions take '") + k + "'");
-  if (shape.read(r) == "box") {
+  const std::string kind = shape.read(r);
+  if (kind == "cylinder" || kind == "stl") {
+    readBody<D>(r, reg, kind, d0, d0, caseDir, limit);
+    const double count = bodyCount(reg, d0);
+    if (count > limit) tooMany(regions, name, "fluid", std::round(count), limit, d0);
+  } else if (kind == "box") {
     readBox<D>(r, reg, d0);
     double count = 1;
     for (int k = 0; k < D; ++k) {
@@ -181,9 +229,7 @@ Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, con
     reg.circle = true;
     reg.centre = centre.read<D>(r);
     checkReach<D>(r, "centre", reg.centre, d0);
-    reg.radius = radius.read(r);
-    if (!(reg.radius / d0 <= kMaxSpacingsFromOrigin))
-      r.error("radius", fmt(reg.radius) + " m is more than " + fmt(kMaxSpacingsFromOrigin) + " spacings");
+    reg.radius = readRadius(r, d0);
     // Lattice points inside: about the disc area (sphere volume) over d0^D.
     const double a = reg.radius / d0;
     const double count = D == 2 ? M_PI * a * a : 4.0 / 3.0 * M_PI * a * a * a;
@@ -239,12 +285,30 @@ double wallCount(const Region<D>& reg) {
   return outer - inner;
 }
 
+// A wall region `shape circle|sphere|cylinder|stl`: always a solid body, its layers within
+// `layers` d0 inside its surface.
+template <int D>
+Region<D> readSolidBody(const Dictionary& r, Region<D> reg, const std::string& kind, double d0,
+                        const Dictionary& regions, double limit, const std::string& caseDir) {
+  if (hasKey<D>(r, "open")) r.error("open", "a " + kind + " wall is a solid body: it has no open faces");
+  if (r.found("solid") && !solid.read(r))
+    r.error("solid", "a " + kind + " wall is always a solid body (its layers inside it, the fluid outside); "
+                     "`solid no` (a container) is for boxes");
+  reg.solid = true;
+  reg.layers = layers.read(r);
+  readBody<D>(r, reg, kind, d0, (reg.layers + 1) * d0, caseDir, limit);
+  const double count = bodyCount(reg, d0);
+  if (count > limit) tooMany(regions, reg.name, "wall", std::round(count), limit, d0);
+  return reg;
+}
+
 template <int D>
 Region<D> readWall(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
-                   double limit) {
+                   double limit, const std::string& caseDir) {
   Region<D> reg = newRegion<D>(r, name, false);
   if (hasKey<D>(r, "velocity")) r.error("velocity", "wall regions are fixed; velocity is for fluid regions only");
-  if (shape.read(r) != "box") r.error("shape", "a wall region is a box; circle and sphere are for fluid regions");
+  const std::string kind = shape.read(r);
+  if (kind != "box") return readSolidBody<D>(r, reg, kind, d0, regions, limit, caseDir);
   readBox<D>(r, reg, d0);
   reg.layers = layers.read(r);
   reg.solid = solid.read(r);
@@ -268,6 +332,10 @@ Region<D> readWall(const Dictionary& r, const std::string& name, double d0, cons
 
 template <int D>
 void fillFluid(Region<D>& reg, double d0) {
+  if (reg.body.shape) {  // the lattice points strictly inside
+    shapeLatticePoints<D>(reg.body, d0, -INFINITY, -kSlack * d0, reg.points);
+    return;
+  }
   if (!reg.circle) {
     std::array<long, D> lo{};
     forEachIndex<D>(lo, reg.cells, [&](const std::array<long, D>& i) {
@@ -293,6 +361,10 @@ void fillFluid(Region<D>& reg, double d0) {
 // inside the box (solidBoxPoints).
 template <int D>
 void fillWall(Region<D>& reg, double d0) {
+  if (reg.body.shape) {  // a curved or STL solid: the lattice points with -layers d0 <= phi < 0
+    shapeLatticePoints<D>(reg.body, d0, -(reg.layers + kSlack) * d0, -kSlack * d0, reg.points);
+    return;
+  }
   std::array<WallAxis, D> axes;
   for (int k = 0; k < D; ++k)
     axes[k] = reg.solid ? wallAxis(reg.min[k], reg.max[k], d0, 0, true, true)
@@ -303,9 +375,11 @@ void fillWall(Region<D>& reg, double d0) {
     wallBoxPoints<D>(axes, reg.points);
 }
 
-// Do the shapes of two fluid regions overlap (more than round-off)?
+// Do the shapes of two fluid regions overlap (more than round-off)? Regions with a curved
+// or STL shape are checked on their particles instead (checkBodyOverlap).
 template <int D>
 bool overlap(const Region<D>& a, const Region<D>& b, double tol) {
+  if (a.body.shape || b.body.shape) return false;
   if (!a.circle && !b.circle) {
     for (int k = 0; k < D; ++k)
       if (std::min(a.max[k], b.max[k]) - std::max(a.min[k], b.min[k]) <= tol) return false;
@@ -512,7 +586,10 @@ void checkTotalCount(const Dictionary& regionsDict, const std::vector<Region<D>>
       double cells = 1;
       for (int k = 0; k < D; ++k) cells *= double(r.cells[k]);
       const double a = r.radius / d0;
-      total += r.circle ? (D == 2 ? M_PI * a * a : 4.0 / 3.0 * M_PI * a * a * a) : r.fluid ? cells : wallCount(r);
+      total += r.body.shape ? bodyCount(r, d0)
+               : r.circle   ? (D == 2 ? M_PI * a * a : 4.0 / 3.0 * M_PI * a * a * a)
+               : r.fluid    ? cells
+                            : wallCount(r);
     }
   if (total > limit)
     regionsDict.error("regions", "the regions would hold " + countText(total) + " particles, more than maxParticles " +
@@ -523,17 +600,60 @@ void checkTotalCount(const Dictionary& regionsDict, const std::vector<Region<D>>
 
 // The wall particles of every wall region, in file order, without duplicates: a particle
 // closer than d0/2 to an earlier one (where boxes meet) is dropped.
+// A curved or STL solid reports how many of its particles were dropped (it meets another
+// wall: a cylinder on a floor).
 template <int D>
 void fillWalls(std::vector<Region<D>>& walls, double d0, std::vector<Vec<D>>& wallPoints, PointGrid<D>& wallGrid) {
   const double tol = kSlack * d0;
   for (auto& w : walls) {
     fillWall(w, d0);
     wallPoints.reserve(wallPoints.size() + w.points.size());
+    std::size_t dropped = 0;
     for (const auto& x : w.points) {
-      if (wallGrid.anyCloserThan(x, 0.5 * d0 - tol)) continue;
+      if (wallGrid.anyCloserThan(x, 0.5 * d0 - tol)) {
+        ++dropped;
+        continue;
+      }
       wallPoints.push_back(x);
       wallGrid.insert(Index(wallPoints.size() - 1));
     }
+    if (w.body.shape && dropped > 0)
+      info(w.dict->location("shape").str() + ": wall '" + w.name + "' (" + w.body.shape->kind() + "): " +
+           std::to_string(dropped) + " of its " + std::to_string(w.points.size()) +
+           " particles lie closer than 0.5 d0 to an earlier wall's and were dropped");
+  }
+}
+
+namespace {
+[[noreturn]] void overlapError(const Dictionary& regionsDict, const std::string& earlier, const std::string& later) {
+  regionsDict.error(later, "fluid region '" + later + "' overlaps fluid region '" + earlier + "' (" +
+                               regionsDict.location(earlier).str() + ")");
+}
+}  // namespace
+
+// Whether x lies strictly inside the shape of fluid region f.
+template <int D>
+bool regionHolds(const Region<D>& f, const Vec<D>& x, double tol) {
+  if (f.body.shape) return f.body.shape->deeperThan(x, tol);
+  if (f.circle) return (x - f.centre).norm() < f.radius - tol;
+  for (int k = 0; k < D; ++k)
+    if (x[k] <= f.min[k] + tol || x[k] >= f.max[k] - tol) return false;
+  return true;
+}
+
+// Fluid region fluids[b], just filled, against each earlier one where either has a curved or
+// STL shape: they overlap when a particle of b lies inside a, or one of a (what the walls
+// left of it) inside b. An overlap thinner than the lattice can go unseen.
+template <int D>
+void checkBodyOverlap(const Dictionary& regionsDict, const std::vector<Region<D>>& fluids, std::size_t b, double tol) {
+  const Region<D>& B = fluids[b];
+  for (std::size_t a = 0; a < b; ++a) {
+    const Region<D>& A = fluids[a];
+    if (!A.body.shape && !B.body.shape) continue;
+    const bool hit =
+        std::any_of(B.points.begin(), B.points.end(), [&](const Vec<D>& x) { return regionHolds(A, x, tol); }) ||
+        std::any_of(A.points.begin(), A.points.end(), [&](const Vec<D>& x) { return regionHolds(B, x, tol); });
+    if (hit) overlapError(regionsDict, A.name, B.name);
   }
 }
 
@@ -616,6 +736,47 @@ void fillOpenBoundaries(const Dictionary& regionsDict, const std::vector<OpenBou
   }
 }
 
+// The fluid particles of every fluid region, in file order: filled, checked against earlier
+// regions of curved or STL shape, cleared of what lies in or next to a wall, checked
+// against the walls and the periodic box; their initial velocities.
+template <int D>
+void fillFluids(const Dictionary& regionsDict, std::vector<Region<D>>& fluids, const std::vector<Region<D>>& walls,
+                const PointGrid<D>& wallGrid, const PeriodicBox<D>& periodic, double d0,
+                std::vector<Vec<D>>& fluidPoints, std::vector<Vec<D>>& fluidVelocity) {
+  const double tol = kSlack * d0;
+  for (std::size_t i = 0; i < fluids.size(); ++i) {
+    Region<D>& f = fluids[i];
+    fillFluid(f, d0);
+    if (f.points.empty())
+      regionsDict.error(f.name, "fluid region '" + f.name + "' holds no particle (" +
+                                    (f.body.shape ? std::string("no lattice point lies inside it,")
+                                                  : "radius " + fmt(f.radius) + " m") +
+                                    " against spacing " + fmt(d0) + " m)");
+    checkBodyOverlap<D>(regionsDict, fluids, i, tol);
+    removeFluidInWalls<D>(regionsDict, f, walls, wallGrid, d0);
+    checkAgainstWalls(regionsDict, f, walls, tol);
+    for (const auto& x : f.points)
+      for (int k = 0; k < D; ++k)
+        if (periodic.periodic[k] && (x[k] < periodic.lo[k] - tol || x[k] >= periodic.hi[k] - tol))
+          regionsDict.error(f.name, "fluid region '" + f.name + "' has a particle at " + fmt<D>(x) +
+                                        ", outside the periodic box in " + axisName(k) + " [" +
+                                        fmt(periodic.lo[k]) + ", " + fmt(periodic.hi[k]) + ")");
+    std::vector<Vec<D>> u;
+    assignVelocity(f, u);
+    fluidPoints.insert(fluidPoints.end(), f.points.begin(), f.points.end());
+    fluidVelocity.insert(fluidVelocity.end(), u.begin(), u.end());
+  }
+}
+
+namespace {
+// The case directory, against which an STL `file` is found: the folder above system/ that
+// holds particlesDict (the dictionary's own folder otherwise).
+std::string caseDirectory(const Dictionary& particlesDict) {
+  const std::filesystem::path folder = std::filesystem::path(particlesDict.name()).parent_path();
+  return (folder.filename() == "system" ? folder.parent_path() : folder).string();
+}
+}  // namespace
+
 double readSpacing(const Dictionary& particlesDict) { return spacing.read(particlesDict); }
 
 template <int D>
@@ -635,15 +796,16 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
 
   // 1. Read every region, in file order.
   const Dictionary& regionsDict = dict.subDict("regions");
+  const std::string caseDir = caseDirectory(dict);
   std::vector<Region<D>> fluids, walls;
   std::vector<std::string> openNames;
   for (const auto& name : regionsDict.keys()) {
     const Dictionary& r = regionsDict.subDict(name);
     const std::string type = regionType.read(r);
     if (type == "fluid")
-      fluids.push_back(readFluid<D>(r, name, d0, regionsDict, limit));
+      fluids.push_back(readFluid<D>(r, name, d0, regionsDict, limit, caseDir));
     else if (type == "wall")
-      walls.push_back(readWall<D>(r, name, d0, regionsDict, limit));
+      walls.push_back(readWall<D>(r, name, d0, regionsDict, limit, caseDir));
     else
       openNames.push_back(name);
   }
@@ -651,10 +813,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
   checkTotalCount<D>(regionsDict, fluids, walls, d0, limit);
   for (std::size_t b = 0; b < fluids.size(); ++b)
     for (std::size_t a = 0; a < b; ++a)
-      if (overlap(fluids[a], fluids[b], tol))
-        regionsDict.error(fluids[b].name, "fluid region '" + fluids[b].name + "' overlaps fluid region '" +
-                                              fluids[a].name + "' (" + regionsDict.location(fluids[a].name).str() +
-                                              ")");
+      if (overlap(fluids[a], fluids[b], tol)) overlapError(regionsDict, fluids[a].name, fluids[b].name);
 
   out.openBoundaries = readOpenBoundaries<D>(regionsDict, openNames, fluids, walls, d0);
 
@@ -665,30 +824,14 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
 
   // 3. Fluid particles, minus those inside or next to a wall; velocities.
   std::vector<Vec<D>> fluidPoints, fluidVelocity;
-  for (auto& f : fluids) {
-    fillFluid(f, d0);
-    if (f.points.empty())
-      regionsDict.error(f.name, "fluid region '" + f.name + "' holds no particle (radius " + fmt(f.radius) +
-                                    " m against spacing " + fmt(d0) + " m)");
-    removeFluidInWalls<D>(regionsDict, f, walls, wallGrid, d0);
-    checkAgainstWalls(regionsDict, f, walls, tol);
-    for (const auto& x : f.points)
-      for (int k = 0; k < D; ++k)
-        if (out.periodic.periodic[k] && (x[k] < out.periodic.lo[k] - tol || x[k] >= out.periodic.hi[k] - tol))
-          regionsDict.error(f.name, "fluid region '" + f.name + "' has a particle at " + fmt<D>(x) +
-                                        ", outside the periodic box in " + axisName(k) + " [" +
-                                        fmt(out.periodic.lo[k]) + ", " + fmt(out.periodic.hi[k]) + ")");
-    std::vector<Vec<D>> u;
-    assignVelocity(f, u);
-    fluidPoints.insert(fluidPoints.end(), f.points.begin(), f.points.end());
-    fluidVelocity.insert(fluidVelocity.end(), u.begin(), u.end());
-  }
+  fillFluids<D>(regionsDict, fluids, walls, wallGrid, out.periodic, d0, fluidPoints, fluidVelocity);
   std::vector<Vec<D>> openPoints, openVelocity;
   std::vector<std::uint8_t> openType;
   fillOpenBoundaries<D>(regionsDict, out.openBoundaries, fluidPoints, fluidVelocity, wallGrid, d0, openPoints,
                         openVelocity, openType);
   dict.checkAllRead();
-  for (const auto& w : walls) out.walls.push_back({w.name, w.min, w.max, w.outerMin, w.outerMax, w.open, w.layers, d0, w.solid});
+  for (const auto& w : walls)
+    out.walls.push_back({w.name, w.min, w.max, w.outerMin, w.outerMax, w.open, w.layers, d0, w.solid, w.body.shape});
 
   // 4. The particle set: fluid first, then walls, then inlet and outlet buffers. (A
   // disc's count was estimated from its area; the exact count is checked here.)

@@ -1,18 +1,21 @@
 // Initial particles from system/particlesDict (docs/design.md 1.2; lattice and
 // wall layers as docs/method.md section 11: fluid at (i + 1/2) d0 from a wall
-// line, dummy layers at -(k + 1/2) d0, k = 0..layers-1).
+// line, dummy layers at -(k + 1/2) d0, k = 0..layers-1; curved and STL bodies
+// as docs/boundaries.md, "Curved and STL solids").
 //
 // Keys read (declared once, with defaults and ranges, in ParticleGenerator.cpp;
 // the tables in docs/dictionaries.md are generated from those declarations):
 //   spacing  d0 (a length, > 0)
 //   dimension 2 | 3 (optional; the solver chooses 2D or 3D from it; must equal D)
-//   regions { <name> { type fluid|wall|inlet|outlet; shape box|circle; ... } }   (in file order;
-//            inlets and outlets: OpenBoundaryRegion.hpp)
+//   regions { <name> { type fluid|wall|inlet|outlet; shape box|circle|sphere|cylinder|stl; ... } }
+//            (in file order; inlets and outlets: OpenBoundaryRegion.hpp, boxes only)
 //   periodic { min (..); max (..); directions (x y); }              (optional)
 //   maxParticles N (optional, at most 2^31 - 1): the regions
 //            are counted before anything is allocated (each region alone,
-//            then all together, before overlap removal) and a case over the
-//            limit is an InputError naming the region and the count.
+//            then all together, before overlap removal; a disc, ball, cylinder or
+//            STL region by its volume, or its layers' volume, over d0^D; the exact
+//            total is checked at the end) and a case over the limit is an
+//            InputError naming the region and the count.
 //
 // Fluid regions
 //   shape box:    min, max. Per direction k, with L_k = max_k - min_k:
@@ -31,6 +34,24 @@
 //                 faces lie a whole number of spacings from the centre; points
 //                 kept when strictly inside: |x - centre| < radius - 1e-9 d0.
 //                 The disc is symmetric under x -> -x, y -> -y about centre.
+//   shape cylinder (3D; in 2D an error: a disc is `shape circle`): point1, point2
+//                 (the centres of the end caps, on the axis; distinct), radius. Lattice
+//                 point1 + (i + 1/2) d0; points kept where phi < -1e-9 d0 (phi: the
+//                 signed distance, CylinderShape.hpp), so an axis along a lattice
+//                 direction has its first row d0/2 inside each cap.
+//   shape stl (3D; in 2D an error): file "<path>" (ASCII or binary STL, read by
+//                 VTK's vtkSTLReader, coincident points merged), relative to the case
+//                 directory (the folder above system/ holding particlesDict) or
+//                 absolute; scale s (> 0, default 1), rotate { axis (..); angle a; }
+//                 (degrees, no unit; counter-clockwise seen from the axis's tip, about
+//                 the origin; absent: none), translate (..) (default 0): a file point x
+//                 goes to R (s x) + translate (scale, then rotate, then translate).
+//                 Lattice: the lower corner of the moved surface's bounding box
+//                 + (i + 1/2) d0 (an axis-aligned cube of a whole number of spacings gives
+//                 exactly the particles of the equivalent box); points kept where the
+//                 point is inside (ray parity) and farther than 1e-9 d0 from every triangle.
+//   A fluid cylinder or stl region overlapping another fluid region is found on the
+//   particles (one of either lies inside the other), after filling.
 //   velocity { type uniform; value (..); }                  U = value
 //            { type rigidRotation; omega w; centre (..); }  2D: U = w (-(y-cy), x-cx),
 //                 counter-clockwise for w > 0 (right-hand rule about +z; the
@@ -59,10 +80,24 @@
 //   within `layers` coordinates of a face on any axis (the core deeper than that stays
 //   empty); the first layer sits s_k/2 behind each face. Every face is closed (`open`
 //   is an error); fluid inside the box is removed and the fluid need not lie inside it.
+//   shape circle|sphere (centre, radius), cylinder, stl (keys as for fluid): always a
+//   solid body (`solid no` and `open` are errors; `solid yes` may be written). Its layers
+//   are the lattice points (the shape's lattice, as for fluid) with
+//   -(layers + 1e-9) d0 <= phi < -1e-9 d0: within `layers` d0 inside the surface, caps
+//   included; the core deeper stays empty. A particle closer than 0.5 d0 to an earlier
+//   wall's is dropped, as for boxes, and a curved or STL wall reports how many it lost
+//   (a line in the log).
+//   STL checks (InputError at `file`, naming the file's full path): missing, unreadable,
+//   empty or without a triangle; not closed (the count of open edges: edges used by one
+//   triangle or by more than two, vtkFeatureEdges); after scale, a part under 2 d0 or
+//   over 1e5 d0 across in EVERY direction (wrong units: `scale 0.001;` for millimetres).
+//   At most 10 maxParticles + 1e6 lattice rows may cross a curved or STL region's
+//   bounding box (a thin body lying across a huge box), else an error at `shape`.
 //
 // Fluid particles closer than 0.5 d0 to a wall particle, or inside a wall's
 // layer region (the box grown by `layers` d0 on its closed sides, minus the
-// open interior; a solid box itself), are removed. When the case has container walls,
+// open interior; a solid box itself; a curved or STL solid where phi < -1e-9 d0),
+// are removed; fluid outside a solid is kept. When the case has container walls,
 // every fluid particle left must lie in the closed interior of some container (its surface box, boundary
 // included, unbounded on an open side): fluid cut by a wall, with particles
 // beyond its layers, is an error naming the region, the wall holding most of
@@ -70,7 +105,8 @@
 // Errors (InputError, naming file, line and keyword): spacing <= 0, two
 // fluid regions whose shapes overlap (both are named), a fluid region left
 // empty, no fluid at all, a fluid region outside every wall or reaching
-// outside the walls' interior, a fluid particle
+// outside the walls' interior (containers only: a solid holds no fluid), the
+// curved and STL errors above, a fluid particle
 // outside the periodic box in a periodic direction, a periodic length that is
 // not a whole number of spacings, more particles than maxParticles, a
 // coordinate more than 1e12 spacings from the origin, unknown keywords
@@ -79,7 +115,8 @@
 // Output: fluid particles first (regions in file order, x fastest), then wall
 // particles, then the inlets' and outlets' buffer particles; id = index, nextId the
 // count; pressure, density, surface = 0; spacing = d0. Mass and rho0 are set later
-// by the solver.
+// by the solver. `walls` holds every wall region (a curved or STL one with its
+// SolidShape, and its bounding box as min, max), for the domain and the leak detector.
 #pragma once
 #include "core/Dictionary.hpp"
 #include "particles/NeighbourList.hpp"

@@ -1,6 +1,6 @@
-// A wall region as the generator built it (particlesDict `type wall; shape box;`), kept
-// for the pieces that need the solid's geometry after set-up: the domain (its default
-// bounds) and the leak detector (the layer region and the closed faces).
+// A wall region as the generator built it (particlesDict `type wall;`: a box, or a curved
+// or STL solid), kept for the pieces that need the solid's geometry after set-up: the
+// domain (its default bounds) and the leak detector (the layer region and the closed faces).
 //   min, max:            the wall surface (inner faces), m
 //   layers, d0:          rows of wall particles outside the surface, spacing
 //   open[2k], open[2k+1]: faces -x_k, +x_k without layers (left right bottom top front back)
@@ -8,14 +8,24 @@
 //   solid:               an obstacle (`solid yes`): the layers lie inside [min, max] behind
 //                        its faces, the fluid outside; outerMin, outerMax = min, max and
 //                        every face is closed
+//   body:                a curved or STL solid (`shape circle|sphere|cylinder|stl`, always
+//                        solid): its shape (SolidShape.hpp); min, max, outerMin, outerMax
+//                        are its bounding box and its layers lie within `layers` d0 inside
+//                        its surface; null for a box
 // Reads no dictionary keys.
 #pragma once
 #include "core/types.hpp"
+#include "particles/SolidShape.hpp"
 #include <array>
 #include <cmath>
+#include <memory>
 #include <string>
 
 namespace shizuku {
+
+// The face a leak through a curved or STL solid is reported on (its surface), after the
+// box faces 0..5 (-x +x -y +y -z +z).
+constexpr int kBodySurface = 6;
 
 template <int D>
 struct WallBox {
@@ -26,6 +36,7 @@ struct WallBox {
   int layers = 0;
   double d0 = 0;
   bool solid = false;
+  std::shared_ptr<const SolidShape<D>> body;
 
   // Inside the layer region deeper than `depth` past the surface: within the outer box,
   // more than `depth` outside the surface box across a closed face k, and more than
@@ -34,8 +45,10 @@ struct WallBox {
   // layers of two faces meet) from counting: its centre may come within d0/2 of the
   // outer rows there as it may of the surface, while in a wall's thickness (across k) any
   // depth counts.
-  // A solid's layer region is the box itself: inside it deeper than `depth` past every face.
+  // A solid's layer region is the box itself: inside it deeper than `depth` past every face;
+  // a body's is the body: phi < -depth.
   bool inLayers(const Vec<D>& x, double depth) const {
+    if (body) return body->deeperThan(x, depth);
     if (solid) {
       for (int k = 0; k < D; ++k)
         if (x[k] <= min[k] + depth || x[k] >= max[k] - depth) return false;
@@ -54,8 +67,10 @@ struct WallBox {
   }
 
   // The face a particle in the layers came through: a container's closed face it lies
-  // beyond, a solid's face nearest to it (0..2D-1: -x +x -y +y -z +z; -1: none).
+  // beyond, a solid's face nearest to it (0..2D-1: -x +x -y +y -z +z; -1: none), a
+  // body's surface (kBodySurface).
   int faceOf(const Vec<D>& x) const {
+    if (body) return kBodySurface;
     int face = -1;
     double nearest = INFINITY;
     for (int f = 0; f < 2 * D; ++f) {

@@ -4,13 +4,20 @@
 // domain is read and checked (min >= max, fluid outside: InputError naming the keyword);
 // no walls: unbounded; a particle inside a wall's layers past d0/2, or through a closed
 // face's layers in one step, is a leak, one through an open face or a periodic wrap is
-// not; removeMarked compacts every present field in order without reallocating.
+// not; a particle inside a curved or STL solid (a disc, a ball, a cylinder, an STL cube)
+// past d0/2 is a leak through its surface, one d0/4 inside is not; solid walls alone leave
+// the domain unbounded and a body widens a container's domain by its bounding box;
+// removeMarked compacts every present field in order without reallocating.
 #define BOOST_TEST_MODULE boundaries_domain
 #include <boost/test/unit_test.hpp>
 
 #include "boundaries/Domain.hpp"
 #include "boundaries/LeakDetector.hpp"
 #include "core/Dictionary.hpp"
+#include "particles/BallShape.hpp"
+#include "particles/CylinderShape.hpp"
+#include "particles/StlShape.hpp"
+#include "../support/StlFiles.hpp"
 
 using namespace shizuku;
 
@@ -167,6 +174,67 @@ void checkLeaks() {
   BOOST_TEST(leaks[0].face == 3);
   BOOST_TEST(leaks[1].particle == 3);
   BOOST_TEST(leaks[1].face == 1);
+}
+
+// A wall holding a curved or STL solid (as the generator hands it on).
+template <int D>
+WallBox<D> bodyWall(const std::string& name, std::shared_ptr<const SolidShape<D>> body) {
+  WallBox<D> w;
+  w.name = name;
+  w.d0 = 0.01;
+  w.layers = 3;
+  w.solid = true;
+  w.min = w.outerMin = body->lower();
+  w.max = w.outerMax = body->upper();
+  w.body = std::move(body);
+  return w;
+}
+
+// Along `inward` (a unit vector) from the surface point `surface`: 0.6 d0 deep is a leak
+// through the body's surface, 0.25 d0 deep and 0.25 d0 outside are not.
+template <int D>
+void checkBodyLeak(const WallBox<D>& w, const Vec<D>& surface, const Vec<D>& inward, const std::string& kind) {
+  const LeakDetector<D> det({w});
+  const std::vector<Vec<D>> x = {surface - 0.0025 * inward, surface + 0.0025 * inward, surface + 0.006 * inward};
+  std::vector<Leak> leaks;
+  det.find(fluidAt<D>(x), x, PeriodicBox<D>(), leaks);
+  BOOST_REQUIRE(leaks.size() == 1u);
+  BOOST_TEST(leaks[0].particle == 2);
+  BOOST_TEST(leaks[0].face == kBodySurface);
+  BOOST_TEST(!leaks[0].crossed);
+  BOOST_TEST(det.describe(leaks[0]) == "wall '" + w.name + "' (" + kind + ")");
+  BOOST_TEST(std::string(faceLabel(leaks[0].face)).rfind("surface", 0) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(leaksThroughCurvedAndStlSolids) {
+  const Vec<2> c2(0.5, 0.5);
+  checkBodyLeak<2>(bodyWall<2>("disc", std::make_shared<BallShape<2>>(c2, 0.1)), c2 + Vec<2>(0.06, 0.08),
+                   Vec<2>(-0.6, -0.8), "solid disc");
+  const Vec<3> c3(0.5, 0.5, 0.5);
+  checkBodyLeak<3>(bodyWall<3>("ball", std::make_shared<BallShape<3>>(c3, 0.1)), c3 + Vec<3>(0, 0, 0.1),
+                   Vec<3>(0, 0, -1), "solid ball");
+  // A cylinder along (1 1 0)/sqrt 2: through its side, and through a cap.
+  const Vec<3> a = Vec<3>(1, 1, 0).normalized();
+  const auto pier = bodyWall<3>("pier", std::make_shared<CylinderShape>(c3, c3 + 0.4 * a, 0.1));
+  checkBodyLeak<3>(pier, c3 + 0.2 * a + Vec<3>(0, 0, 0.1), Vec<3>(0, 0, -1), "solid cylinder");
+  checkBodyLeak<3>(pier, c3 + 0.4 * a, -a, "solid cylinder");
+  // An STL cube (12 triangles) 0.2 m across: through its top face.
+  const auto cube = test::boxMesh(Vec<3>(0.4, 0.4, 0.4), Vec<3>(0.6, 0.6, 0.6));
+  const auto stl = std::make_shared<StlShape>(TriangleSurface(cube.v, cube.t, 0.04), "cube.stl", 0.04);
+  checkBodyLeak<3>(bodyWall<3>("cube", stl), Vec<3>(0.53, 0.47, 0.6), Vec<3>(0, 0, -1), "STL surface 'cube.stl'");
+  // The same with its phi voxels (a solid wall's, as the generator builds it).
+  const auto voxels = std::make_shared<StlShape>(TriangleSurface(cube.v, cube.t, 0.04), "cube.stl", 0.04, 0.01);
+  checkBodyLeak<3>(bodyWall<3>("cube", voxels), Vec<3>(0.53, 0.47, 0.6), Vec<3>(0, 0, -1), "STL surface 'cube.stl'");
+}
+
+BOOST_AUTO_TEST_CASE(domainOfSolids) {
+  const Dictionary none = Dictionary::fromString("", "controlDict");
+  const auto p = fluidAt<2>({at<2>(0.5, 0.2)});
+  const auto disc = bodyWall<2>("disc", std::make_shared<BallShape<2>>(Vec<2>(1.2, 0.2), 0.1));
+  BOOST_TEST(!Domain<2>::read(none, {disc}, p).bounded());  // solids alone hold no fluid
+  const Domain<2> d = Domain<2>::read(none, {tank<2>(), disc}, p);
+  BOOST_TEST(d.max()[0] == 1.3, boost::test_tools::tolerance(1e-12));  // the disc sticks out of the tank
+  BOOST_TEST(d.min()[0] == -0.03, boost::test_tools::tolerance(1e-12));
 }
 
 template <int D>
