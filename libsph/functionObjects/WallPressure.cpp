@@ -168,6 +168,9 @@ void WallPressure<D>::buildTerms(const Dictionary& dict) {
   }
   // The first two layers behind the face: outside a container's surface, inside a solid.
   const WallAxis& n = axes[axis_];
+  if (wall_.solid && n.x.size() < 2)
+    dict.error("centre", cat("solid wall '", wall_.name, "' is one particle thick across the face ", faceName(),
+                             ": the sensor extrapolates from two layers behind the face"));
   const int out = wall_.solid ? -1 : 1;
   const long first = side_ ? (wall_.solid ? n.innerEnd - 1 : n.innerEnd) : (wall_.solid ? n.innerBegin : n.innerBegin - 1);
   const long layer1 = first, layer2 = first + (side_ ? out : -out);

@@ -377,6 +377,15 @@ BOOST_AUTO_TEST_CASE(input_errors_name_the_keyword) {
     }
     return std::string("no error");
   };
+  // A solid box one particle thick (0.015 < d0 across x): no second layer behind its face.
+  const WallBox<2> thin = blockBox<2>(Vec<2>(0.2, 0), Vec<2>(0.215, 0.1));
+  const Dictionary thinDict = Dictionary::fromString("type wallPressure; wall block; centre (0.2 0.05); size 0.004;", "c");
+  try {
+    WallPressure<2> w("s", thinDict, {thin});
+    BOOST_TEST(false);
+  } catch (const InputError& e) {
+    BOOST_TEST(std::string(e.what()).find("one particle thick") != std::string::npos);
+  }
   const std::string unknown = message("type wallPressure; wall tnak; centre (0.4 0.1); size 0.004;");
   BOOST_TEST(unknown.find("keyword 'wall'") != std::string::npos);
   BOOST_TEST(unknown.find("did you mean 'tank'") != std::string::npos);
