@@ -10,7 +10,7 @@ Both runs use the tutorial's schemes with adaptive dt (maxCo 0.2) to endTime and
 every 5 ms:
   - the surge front: the largest x of the body of water (fluidExtent connectedOnly: lone
     particles thrown ahead are no front), relative difference |x3D - x2D| / x2D at most
-    FRONT (issue 19: 2 %) at every sample after the front has moved one column width;
+    FRONT (issue 19: 2 %) at every sample after the front has moved one spacing;
   - the interior density-error mode (densityError, eq. 22, histogram bins 0.05 pp) averaged
     over the samples, as the paper's comparison averages it over a run: |mean mode3D - mean
     mode2D| at most MODE (0.2 percentage points). A single sample's mode is no measure
