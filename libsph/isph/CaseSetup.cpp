@@ -58,7 +58,7 @@ NumericalScheme<D> CaseSetup<D>::readScheme(const CaseFiles& files, FlowState<D>
   NumericalScheme<D> scheme;
   scheme.derivatives = DerivativeOperator<D>::create(derivativeSchemeFromName(key::derivatives.read(sch)));
   scheme.freeSurface = std::make_unique<FreeSurfaceDetector<D>>(
-      FreeSurfaceParameters::read(sch.subDictPtr("freeSurface"), D));
+      FreeSurfaceParameters::read(sch.subDictPtr("freeSurface")));
   scheme.reorderInterval = key::reorderInterval.read(sch);
   scheme.ppe = std::make_unique<PressureEquation<D>>(LinearSolver::create(files.sphSolution.subDictPtr("pressure")));
   scheme.ppe->setZeroPressureOnSurface(scheme.freeSurface->parameters().zeroPressureOnSurface);

@@ -218,7 +218,7 @@ std::vector<std::string> IsphStep<D>::describe() const {
            s_.kernel.type() == KernelType::cubicSpline ? "cubic spline" : "Wendland C2", " kernel, mass ",
            s_.particles.mass));
   const auto& fp = scheme_.freeSurface->parameters();
-  line(fp.enabled ? cat("free surface: divR < ", fp.candidateThreshold, fp.scanRegion ? " + scan region" : "",
+  line(fp.enabled ? cat("free surface: indicator < ", fp.candidateThreshold, fp.scanRegion ? " + scan region" : "",
                         ", splash < ", fp.splashThreshold, ", vicinity ", fp.vicinityRadius, " h",
                         fp.zeroPressureOnSurface ? ", p = 0 on the surface (eq. 6b)" : ", p = 0 on the particles")
                   : std::string("free surface: off (closed domain, pressure level pinned)"));

@@ -4,6 +4,7 @@
 // (pressureCondition is handed to the pressure equation, docs/method.md 4.4).
 #include "surface/FreeSurface.hpp"
 #include "core/Parameter.hpp"
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 namespace shizuku {
@@ -12,13 +13,14 @@ namespace {
 
 namespace key {
 
-// divR is D for a full neighbourhood, so thresholds above 3 would mark every particle.
+// The indicator is 2 for a full neighbourhood in 2D and 3D alike, so thresholds above 2
+// would mark every particle.
 const ParameterGroup freeSurface("system/sphSchemes: freeSurface",
-    "Free-surface detection (docs/method.md 5): divR thresholds, vicinity, scan region.");
+    "Free-surface detection (docs/method.md 5): indicator thresholds, vicinity, scan region.");
 const ScalarParameter candidateThreshold = freeSurface.scalar("candidateThreshold", dim::none,
-    "divR below this: free-surface candidate (stage 1)").def(1.75).shownDefault("1.75 (2D), 2.625 (3D)").min(0).max(3);
+    "surface indicator (divR in 2D) below this: free-surface candidate (stage 1)").def(1.75).min(0).max(2);
 const ScalarParameter splashThreshold = freeSurface.scalar("splashThreshold", dim::none,
-    "divR below this: splash particle (<= candidateThreshold)").def(0.4).shownDefault("0.4 (2D), 0.6 (3D)").min(0).max(3);
+    "surface indicator below this: splash particle (<= candidateThreshold)").def(0.4).min(0).max(2);
 const ScalarParameter vicinityRadius = freeSurface.scalar("vicinityRadius", dim::none,
     "vicinity of the surface, times h").def(2).above(0).max(2);
 const SwitchParameter enabled = freeSurface.onOff("enabled",
@@ -33,13 +35,12 @@ const OptionParameter pressureCondition = freeSurface.option("pressureCondition"
 }  // namespace key
 }  // namespace
 
-FreeSurfaceParameters FreeSurfaceParameters::read(const Dictionary* dict, int dimension) {
+FreeSurfaceParameters FreeSurfaceParameters::read(const Dictionary* dict) {
   FreeSurfaceParameters p;
-  // divR of a full neighbourhood is D: the declared (2D) thresholds scale by D/2.
+  // The indicator (docs/method.md 5.1) is the same number in 2D and 3D: one set of thresholds.
   // An absent sub-dictionary gives every default (still listed for -dryRun).
-  const double scale = dimension / 2.0;
-  p.candidateThreshold = key::candidateThreshold.readOr(dict, scale * key::candidateThreshold.info().defaultNumber);
-  p.splashThreshold = key::splashThreshold.readOr(dict, scale * key::splashThreshold.info().defaultNumber);
+  p.candidateThreshold = key::candidateThreshold.read(dict);
+  p.splashThreshold = key::splashThreshold.read(dict);
   p.vicinityRadius = key::vicinityRadius.read(dict);
   p.enabled = key::enabled.read(dict);
   p.scanRegion = key::scanRegion.read(dict);
@@ -49,6 +50,22 @@ FreeSurfaceParameters FreeSurfaceParameters::read(const Dictionary* dict, int di
     dict->error("splashThreshold", "must not exceed candidateThreshold");
   return p;
 }
+
+template <int D>
+double surfaceIndicator(double divR, const Mat<D>& L) {
+  if constexpr (D == 2) {
+    (void)L;
+    return divR;  // the trace of L: both eigenvalues
+  } else {
+    // The two smallest eigenvalues: trace less the largest (closed form for a symmetric 3x3).
+    Eigen::SelfAdjointEigenSolver<Mat<3>> eig;
+    eig.computeDirect(L, Eigen::EigenvaluesOnly);
+    return L.trace() - eig.eigenvalues()(2);
+  }
+}
+
+template double surfaceIndicator<2>(double, const Mat<2>&);
+template double surfaceIndicator<3>(double, const Mat<3>&);
 
 template <int D>
 void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
@@ -67,19 +84,22 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
     if (!s.isFluid(i)) { s.divR[i] = D; s.gradC[i].setZero(); P.surface[i] = 0; continue; }
     double div = 0;
     Vec<D> gc = Vec<D>::Zero();
+    Mat<D> L = Mat<D>::Zero();                       // position-gradient matrix, 3D only
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
       const double dw = s.kernel.dwdr(nl.r[k]);
       div -= V * dw * nl.r[k];                       // -V r_ij . (dw/dr r_ij / r)
       gc += V * (dw / nl.r[k]) * nl.rij[k];          // sum V gradW_ij: points toward the neighbours
+      if constexpr (D == 3) L.noalias() -= (V * dw / nl.r[k]) * nl.rij[k] * nl.rij[k].transpose();
     }
     s.divR[i] = div;
+    const double indicator = surfaceIndicator<D>(div, L);
     s.gradC[i] = gc;                                  // inward (into the fluid)
     const double g = gc.norm();
     if (g > 0) P.normal[i] = -gc / g;                 // outward unit normal
     SurfaceClass c = SurfaceClass::interior;
     if (par_.enabled) {
-      if (div < par_.splashThreshold) c = SurfaceClass::splash;
-      else if (div < par_.candidateThreshold) c = SurfaceClass::free;  // candidate, stage 2 decides
+      if (indicator < par_.splashThreshold) c = SurfaceClass::splash;
+      else if (indicator < par_.candidateThreshold) c = SurfaceClass::free;  // candidate, stage 2 decides
     }
     P.surface[i] = std::uint8_t(c);
   }

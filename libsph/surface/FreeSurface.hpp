@@ -1,8 +1,11 @@
 // Free-surface detection, particle classes and outward normals (docs/method.md 5).
 //   divR_i  = -sum_j V r_ij . gradW_ij           (uncorrected kernel gradient, fluid + walls)
+//   L_i     = -sum_j V r_ij (x) gradW_ij         (its matrix; divR_i = trace L_i)
 //   gradC_i = sum_j V gradW_ij                   (non-difference form; points into the fluid)
 //   n_i     = -gradC_i / |gradC_i|               (outward normal)
-// Stage 1: divR < splashThreshold -> splash; divR < candidateThreshold -> candidate; else interior.
+// Indicator s_i = sum of the two smallest eigenvalues of L_i: divR_i in 2D, trace less the
+// largest eigenvalue in 3D, so a configuration extruded along z is classified as in 2D.
+// Stage 1: s < splashThreshold -> splash; s < candidateThreshold -> candidate; else interior.
 // Stage 2 (Marrone scan region): a candidate is NOT free surface if a neighbour j lies in the
 // cone |r_ji| < sqrt(2) h, angle(n_i, r_ji) < pi/4, or, farther away, within h of r_i + h n_i.
 // Vicinity: a non-free fluid particle with a free-surface particle within vicinityRadius (2h).
@@ -16,7 +19,7 @@ namespace shizuku {
 
 struct FreeSurfaceParameters {
   // Set by read(); defaults, ranges and meanings are declared once in FreeSurface.cpp.
-  double candidateThreshold{};  // on divR (the 2D default is scaled by D/2 in 3D)
+  double candidateThreshold{};  // on the indicator s (the same number in 2D and 3D)
   double splashThreshold{};
   double vicinityRadius{};      // times h
   bool enabled{};               // false for a closed domain without free surface
@@ -29,8 +32,12 @@ struct FreeSurfaceParameters {
   // p = 0 on the surface, outside the free-surface particles (eq. 6b, docs/method.md 4.4),
   // rather than on the particles; read here, applied by the pressure equation.
   bool zeroPressureOnSurface{};
-  static FreeSurfaceParameters read(const Dictionary* dict, int dimension);
+  static FreeSurfaceParameters read(const Dictionary* dict);
 };
+
+// The surface indicator s of docs/method.md 5.1 from divR and L (L is read only in 3D).
+template <int D>
+double surfaceIndicator(double divR, const Mat<D>& L);
 
 template <int D>
 class FreeSurfaceDetector {

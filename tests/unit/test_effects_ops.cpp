@@ -220,7 +220,7 @@ void checkTangentialBall(double R) {
       f.add(x);
     }
     f.update();
-    FreeSurfaceDetector<D>(FreeSurfaceParameters::read(nullptr, D)).detect(f.s);
+    FreeSurfaceDetector<D>(FreeSurfaceParameters::read(nullptr)).detect(f.s);
     ShiftingDistribution<D> e(variant(v));
     const auto dr = shiftOnce(f, e);
     Fixture<D> g = f;  // the same state with every particle interior: no projection
@@ -276,7 +276,7 @@ BOOST_AUTO_TEST_CASE(projection_only_where_the_normal_is_defined) {
   f.s.periodic.lo = Vec<2>(-0.5, 0);
   f.s.periodic.hi = Vec<2>(23.5, 0);
   f.update();
-  FreeSurfaceDetector<2>(FreeSurfaceParameters::read(nullptr, 2)).detect(f.s);
+  FreeSurfaceDetector<2>(FreeSurfaceParameters::read(nullptr)).detect(f.s);
   // Measured |gradC| h by row: 0.56 (free), 0.053, 0.021 (vicinity), 0.0016 (interior
   // row 3), 1e-16 deeper. A particle just inside the vicinity radius whose support barely
   // reaches the surface, as in a disordered flow, is made here by scaling the gradient
