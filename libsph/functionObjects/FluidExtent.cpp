@@ -23,18 +23,24 @@ const ParameterGroup extent("system/controlDict: functions/<name> (type fluidExt
     "Bounding box of the fluid written by fluidExtent.");
 const SwitchParameter connectedOnly = extent.onOff("connectedOnly",
     "only fluid particles with another fluid particle within 2h (lone particles left out)").def(false);
+const IntParameter minNeighbours = extent.integer("minNeighbours",
+    "with connectedOnly: fewest other fluid particles within 2h of a counted particle").def(1).min(1).max(1000);
 }  // namespace key
 
-// Whether fluid particle i has another fluid particle within the support at its current
-// position (the neighbour list of the step's start, minimum-image distances taken now).
+// Whether fluid particle i has at least `least` other fluid particles within the support at
+// its current position (the neighbour list of the step's start, minimum-image distances
+// taken now).
 template <int D>
-bool connected(const FlowState<D>& s, std::size_t i) {
+bool connected(const FlowState<D>& s, std::size_t i, int least) {
   const auto& nl = s.neighbours;
   const auto& x = s.particles.position;
   const double support2 = 4 * s.h * s.h;
+  int found = 0;
   for (Index k = nl.begin(i); k < nl.end(i); ++k) {
     const auto j = std::size_t(nl.j[k]);
-    if (j != i && s.particles.isFluid(j) && s.periodic.difference(x[i], x[j]).squaredNorm() < support2) return true;
+    if (j != i && s.particles.isFluid(j) && s.periodic.difference(x[i], x[j]).squaredNorm() < support2 &&
+        ++found >= least)
+      return true;
   }
   return false;
 }
@@ -42,15 +48,19 @@ bool connected(const FlowState<D>& s, std::size_t i) {
 
 template <int D>
 FluidExtent<D>::FluidExtent(const std::string& name, const Dictionary& dict)
-    : SampledFunctionObject<D>(name, "fluidExtent", dict), connectedOnly_(key::connectedOnly.read(dict)) {}
+    : SampledFunctionObject<D>(name, "fluidExtent", dict),
+      minNeighbours_(key::connectedOnly.read(dict) ? key::minNeighbours.read(&dict) : 0) {
+  if (minNeighbours_ == 0 && dict.found("minNeighbours"))
+    dict.error("minNeighbours", "counts only with connectedOnly yes");
+}
 
 template <int D>
-void FluidExtent<D>::compute(const FlowState<D>& s, Vec<D>& lo, Vec<D>& hi, bool connectedOnly) {
+void FluidExtent<D>::compute(const FlowState<D>& s, Vec<D>& lo, Vec<D>& hi, int minNeighbours) {
   const auto& p = s.particles;
-  const bool lists = connectedOnly && s.neighbours.numParticles() == s.size();
+  const bool lists = minNeighbours > 0 && s.neighbours.numParticles() == s.size();
   thread_local std::vector<Box<D>> partial;
   const Box<D> b = blockReduce(p.size(), partial, [&](Box<D>& a, std::size_t i) {
-    if (!p.isFluid(i) || (lists && !connected(s, i))) return;
+    if (!p.isFluid(i) || (lists && !connected(s, i, minNeighbours))) return;
     a.lo = a.lo.cwiseMin(p.position[i]);
     a.hi = a.hi.cwiseMax(p.position[i]);
   });
@@ -64,20 +74,23 @@ void FluidExtent<D>::compute(const FlowState<D>& s, Vec<D>& lo, Vec<D>& hi, bool
 
 template <int D>
 void FluidExtent<D>::open(const FlowState<D>&, const RunInfo& info) {
-  if (connectedOnly_ && info.postProcessing)
+  if (minNeighbours_ > 0 && info.postProcessing)
     throw InputError(cat("function object '", this->name(), "': connectedOnly needs the solver's neighbour lists; "
                          "shizukuPostProcess has none: sample it during the run"));
   this->file_.emplace(this->makeFile(info, "extent.dat"));
-  this->file_->comment(connectedOnly_ ? "bounding box of the fluid particle positions with another fluid particle "
-                                        "within 2h (walls and lone particles excluded)"
-                                      : "bounding box of the fluid particle positions (walls excluded)");
+  this->file_->comment(minNeighbours_ == 0 ? "bounding box of the fluid particle positions (walls excluded)"
+                       : minNeighbours_ == 1
+                           ? "bounding box of the fluid particle positions with another fluid particle within 2h "
+                             "(walls and lone particles excluded)"
+                           : cat("bounding box of the fluid particle positions with at least ", minNeighbours_,
+                                 " other fluid particles within 2h (walls and smaller groups excluded)"));
   this->file_->columns({"time", "min", "max"}, {"s", "m", "m"});
 }
 
 template <int D>
 void FluidExtent<D>::sample(const FlowState<D>& s, const RunInfo&) {
   Vec<D> lo, hi;
-  compute(s, lo, hi, connectedOnly_);
+  compute(s, lo, hi, minNeighbours_);
   using F = PostProcessingFile;
   this->file_->row(F::number(s.time) + " " + F::vector<D>(lo) + " " + F::vector<D>(hi));
 }

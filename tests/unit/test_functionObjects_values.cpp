@@ -126,15 +126,23 @@ BOOST_AUTO_TEST_CASE(fluid_extent) {
   Vec<3> lo3, hi3;
   FluidExtent<3>::compute(s3, lo3, hi3);
   for (int a = 0; a < 3; ++a) BOOST_TEST(close(hi3[a] - lo3[a], 2 * d0, 1e-15));
-  // connectedOnly: a particle 1.5 d0 beyond the lattice's right column (within 2h = 2.4 d0
-  // of it) counts, a lone one 5 m away does not; without the option both count.
+  // connectedOnly (minNeighbours 1): a particle 1.5 d0 beyond the lattice's right column
+  // (within 2h = 2.4 d0 of it) counts, a lone one 5 m away does not; without it both count.
   {
     auto t = lattice<2>(10, d0, c, {Vec<2>(c.x() + 6 * d0, c.y()), Vec<2>(c.x() + 5, c.y())});
     for (std::size_t i = t.size() - 2; i < t.size(); ++i) t.particles.type[i] = std::uint8_t(ParticleType::fluid);
-    FluidExtent<2>::compute(t, lo, hi, true);
+    FluidExtent<2>::compute(t, lo, hi, 1);
     BOOST_TEST(close(hi.x(), c.x() + 6 * d0, 1e-15));
     FluidExtent<2>::compute(t, lo, hi);
     BOOST_TEST(close(hi.x(), c.x() + 5, 1e-15));
+    // minNeighbours: the particle 1.5 d0 out, level with the lattice's centre, has 4 lattice
+    // particles within 2.4 d0 (the right column's rows at +-0.5 d0, 1.58 d0 away, and at
+    // +-1.5 d0, 2.12 d0; the rows at +-2.5 d0 are 2.92 d0 away, the next column 2.55 d0):
+    // it counts with 4 and not with 5, and then the right column (x = c + 4.5 d0) is the edge.
+    FluidExtent<2>::compute(t, lo, hi, 4);
+    BOOST_TEST(close(hi.x(), c.x() + 6 * d0, 1e-15));
+    FluidExtent<2>::compute(t, lo, hi, 5);
+    BOOST_TEST(close(hi.x(), c.x() + 4.5 * d0, 1e-15));
   }
   // no fluid: nan
   for (auto& t : s.particles.type) t = std::uint8_t(ParticleType::wall);
