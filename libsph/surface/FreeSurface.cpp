@@ -51,6 +51,9 @@ FreeSurfaceParameters FreeSurfaceParameters::read(const Dictionary* dict) {
   return p;
 }
 
+namespace {
+
+// The surface indicator s of docs/method.md 5.1 from divR and L (L is read only in 3D).
 template <int D>
 double surfaceIndicator(double divR, const Mat<D>& L) {
   if constexpr (D == 2) {
@@ -64,8 +67,7 @@ double surfaceIndicator(double divR, const Mat<D>& L) {
   }
 }
 
-template double surfaceIndicator<2>(double, const Mat<2>&);
-template double surfaceIndicator<3>(double, const Mat<3>&);
+}  // namespace
 
 template <int D>
 void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {

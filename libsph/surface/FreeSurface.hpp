@@ -35,10 +35,6 @@ struct FreeSurfaceParameters {
   static FreeSurfaceParameters read(const Dictionary* dict);
 };
 
-// The surface indicator s of docs/method.md 5.1 from divR and L (L is read only in 3D).
-template <int D>
-double surfaceIndicator(double divR, const Mat<D>& L);
-
 template <int D>
 class FreeSurfaceDetector {
  public:

@@ -24,8 +24,8 @@ interpolated to the slab's sample times. Measured (2026-12-02, docs/validation.m
 "Quasi-2D slab"): at d0 = 2 cm the slab lags by up to 3.1 % (t = 0.256 s) and leads by up
 to 3.4 % (t = 0.381 s), the mean interior modes 0.033 % and 0.031 %; at d0 = 1 cm (ctest
 label long) it lags by 2.3 % at t = 0.34 s and by up to 4.3 % (t = 0.405 s) once its tip
-breaks off at 0.365 s (the 2D tip holds until the far wall), modes 0.067 pp apart. The issue's 2 % is printed
-and not asserted; the guard asserted is about a third above the measured difference at
+breaks off at 0.365 s (the 2D tip holds until the far wall), modes 0.067 pp apart. The
+issue's 2 % is printed and not asserted; the guard asserted is about a third above the measured difference at
 each of the two resolutions (4.5 % at 2 cm, 5.5 % at 1 cm), so a change that makes the 3D
 code depart further from 2D fails. What remains is the fitted normal of eq. (6b) at the tip
 (with the detector's normal the fronts agree within 0.9 % at 2 cm).
