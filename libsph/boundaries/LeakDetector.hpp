@@ -7,7 +7,10 @@
 // its capacity. Open faces are not checked (fluid may leave through them). A solid wall
 // box (an obstacle) is checked for the first condition only: crossing it in one step
 // would take a move longer than its thickness, which the Courant limit (0.2 h) forbids
-// for any obstacle thicker than a spacing. So is a curved or STL solid (WallBox::body):
+// for any obstacle thicker than a spacing. A solid box's face that lies against another
+// wall (its centre, d0/2 outside the face, is inside that wall's layers or solid: a box on
+// the tank's floor) is covered: depth in the box is measured from its other faces, so fluid
+// squeezed between the floor and the box's bottom row is a leak. So is a curved or STL solid (WallBox::body):
 // a particle inside it with phi < -d0/2 (past its first layer) is a leak through its
 // surface; only particles in its bounding box evaluate phi.
 // Reads no dictionary keys (the walls come from particlesDict through the generator).
@@ -30,7 +33,8 @@ struct Leak {
 template <int D>
 class LeakDetector {
  public:
-  explicit LeakDetector(std::vector<WallBox<D>> walls) : walls_(std::move(walls)) {}
+  // Marks the covered faces of the solid boxes among `walls`.
+  explicit LeakDetector(std::vector<WallBox<D>> walls);
   bool active() const { return !walls_.empty(); }
   const std::vector<WallBox<D>>& walls() const { return walls_; }
   // The leaks of the fluid particles of p; `previous` holds their positions one step

@@ -12,6 +12,10 @@
 //                        solid): its shape (SolidShape.hpp); min, max, outerMin, outerMax
 //                        are its bounding box and its layers lie within `layers` d0 inside
 //                        its surface; null for a box
+//   covered:             a solid box's faces that lie against another wall (an obstacle's
+//                        bottom on the tank's floor): fluid cannot reach the box through
+//                        them, so depth inside the box is measured from its other faces
+//                        (set by LeakDetector)
 // Reads no dictionary keys.
 #pragma once
 #include "core/types.hpp"
@@ -37,6 +41,7 @@ struct WallBox {
   double d0 = 0;
   bool solid = false;
   std::shared_ptr<const SolidShape<D>> body;
+  std::array<bool, 2 * D> covered{};
 
   // Inside the layer region deeper than `depth` past the surface: within the outer box,
   // more than `depth` outside the surface box across a closed face k, and more than
@@ -45,13 +50,14 @@ struct WallBox {
   // layers of two faces meet) from counting: its centre may come within d0/2 of the
   // outer rows there as it may of the surface, while in a wall's thickness (across k) any
   // depth counts.
-  // A solid's layer region is the box itself: inside it deeper than `depth` past every face;
-  // a body's is the body: phi < -depth.
+  // A solid's layer region is the box itself: inside it deeper than `depth` past every face
+  // that is not covered; a body's is the body: phi < -depth.
   bool inLayers(const Vec<D>& x, double depth) const {
     if (body) return body->deeperThan(x, depth);
     if (solid) {
       for (int k = 0; k < D; ++k)
-        if (x[k] <= min[k] + depth || x[k] >= max[k] - depth) return false;
+        if (x[k] <= min[k] + (covered[2 * k] ? 0 : depth) || x[k] >= max[k] - (covered[2 * k + 1] ? 0 : depth))
+          return false;
       return true;
     }
     for (int k = 0; k < D; ++k)
@@ -67,7 +73,7 @@ struct WallBox {
   }
 
   // The face a particle in the layers came through: a container's closed face it lies
-  // beyond, a solid's face nearest to it (0..2D-1: -x +x -y +y -z +z; -1: none), a
+  // beyond, a solid's uncovered face nearest to it (0..2D-1: -x +x -y +y -z +z; -1: none), a
   // body's surface (kBodySurface).
   int faceOf(const Vec<D>& x) const {
     if (body) return kBodySurface;
@@ -80,7 +86,7 @@ struct WallBox {
         continue;
       }
       const double depth = f % 2 ? max[k] - x[k] : x[k] - min[k];
-      if (depth < nearest) { nearest = depth; face = f; }
+      if (!covered[f] && depth < nearest) { nearest = depth; face = f; }
     }
     return face;
   }

@@ -5,7 +5,8 @@
 // no walls: unbounded; a particle inside a wall's layers past d0/2, or through a closed
 // face's layers in one step, is a leak, one through an open face or a periodic wrap is
 // not; a particle inside a curved or STL solid (a disc, a ball, a cylinder, an STL cube)
-// past d0/2 is a leak through its surface, one d0/4 inside is not; solid walls alone leave
+// past d0/2 is a leak through its surface, one d0/4 inside is not; a solid box on the floor
+// leaks fluid squeezed under its bottom row (that face is covered); solid walls alone leave
 // the domain unbounded and a body widens a container's domain by its bounding box;
 // removeMarked compacts every present field in order without reallocating.
 #define BOOST_TEST_MODULE boundaries_domain
@@ -174,6 +175,24 @@ void checkLeaks() {
   BOOST_TEST(leaks[0].face == 3);
   BOOST_TEST(leaks[1].particle == 3);
   BOOST_TEST(leaks[1].face == 1);
+
+  // The solid block standing on the tank's floor: its bottom face lies against the floor's
+  // layers, so fluid squeezed under the block's bottom row (0.4 d0 above the floor, mid
+  // block) is a leak, reported on the nearest face fluid can reach (the top, 0.096 away).
+  // A particle 0.4 d0 inside the block's side face at the same height is not (it may stand
+  // at the foot of the face), nor is the squeezed one with the block alone (no floor: the
+  // bottom is a face like the others).
+  const LeakDetector<D> onFloor({tank<D>(), solid});
+  const std::vector<Vec<D>> foot = {at<D>(0.5, 0.004), at<D>(0.596, 0.004)};
+  onFloor.find(fluidAt<D>(foot), foot, noPeriodic, leaks);
+  BOOST_REQUIRE(leaks.size() == 1u);
+  BOOST_TEST(leaks[0].particle == 0);
+  BOOST_TEST(leaks[0].wall == 1);
+  BOOST_TEST(leaks[0].face == 3);
+  BOOST_TEST(onFloor.walls()[1].covered[2]);
+  BOOST_TEST(!onFloor.walls()[1].covered[3]);
+  body.find(fluidAt<D>(foot), foot, noPeriodic, leaks);
+  BOOST_TEST(leaks.empty());
 }
 
 // A wall holding a curved or STL solid (as the generator hands it on).
