@@ -9,7 +9,7 @@
 //    |sum_w W r_fw| over its wall neighbours (wall particles only, not inlet or outlet
 //    buffers; zero without any), and whether it is lone (no other fluid particle within
 //    its support).
-//  - AdamiRow: the implicit wall-pressure row (docs/method.md 11, eq. 11a):
+//  - AdamiRow: the implicit wall-pressure row (docs/method.md 11, eqs. 11a, 11b):
 //      p_w - sum_f (W_wf / sum W) p_f = rho0 sum_f W_wf a_f . r_wf / sum_f W_wf,
 //      a_f = F_f + n_f (n_f . (u^n_f - U_w)) / dt,     F_f = (u*_f - u^n_f) / dt,
 //    r_wf = r_w - r_f, F_f the forces of the predictor per unit mass. The forces enter
@@ -17,6 +17,9 @@
 //    along the wall normal (the velocity-Neumann term stops motion into or out of the wall
 //    in one step and leaves the motion along it alone). A lone particle's forces enter
 //    along n_f only: nothing below it carries its weight beside a vertical wall.
+//    The velocity part may lower the row's right-hand side to ambient pressure, not below
+//    (eq. 11b, with the fluid neighbours' previous pressure as the estimate of sum W p_f):
+//    water does not pull on a wall, it separates (a jet leaving a box's top edge).
 //    p_w = 0 without fluid neighbours. Inlet particles take the row with the whole
 //    relative velocity, a_f = (u*_f - U_w)/dt, U_w their prescribed velocity: an inlet
 //    prescribes every component of the velocity (docs/boundaries.md).

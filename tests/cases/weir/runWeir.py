@@ -10,7 +10,8 @@ endTime set to 4 s. Runs the solver, then the tutorial's weirDischarge.py over t
 (the tutorial's own window with --full), and checks:
   - exit status 0;
   - the discharge per unit width over the crest against the critical-flow relation,
-    |q / (sqrt(g) (2E/3)^(3/2)) - 1| <= 0.05;
+    |q / (sqrt(g) (2E/3)^(3/2)) - 1| <= 0.08 (README.md: the resolution study and the
+    measured range of broad-crested weirs);
   - steady state: the discharge over the crest and the outlet's capture rate within 2 %
     of the inlet's release rate;
   - the mass balance at every written time: N_fluid = N_fluid(0) + released - captured
@@ -48,8 +49,8 @@ def main():
     with open(os.path.join(case, "plots", "weirDischarge.json")) as f:
         m = json.load(f)
     ratio = m["q"] / m["qc"]
-    st.check(abs(ratio - 1) <= 0.05, f"q = {m['q']:.5f} m^2/s over the crest, sqrt(g)(2E/3)^1.5 = {m['qc']:.5f} "
-                                     f"(E = {m['E']:.5f} m): ratio {ratio:.4f} within 5 %")
+    st.check(abs(ratio - 1) <= 0.08, f"q = {m['q']:.5f} m^2/s over the crest, sqrt(g)(2E/3)^1.5 = {m['qc']:.5f} "
+                                     f"(E = {m['E']:.5f} m): ratio {ratio:.4f} within 8 %")
     for what, key in (("over the crest", "q"), ("captured by the outlet", "qOutlet")):
         st.check(abs(m[key] / m["qInlet"] - 1) <= 0.02,
                  f"steady: q {what} {m[key]:.5f} within 2 % of the inlet's {m['qInlet']:.5f} m^2/s")
