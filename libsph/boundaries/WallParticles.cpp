@@ -56,7 +56,7 @@ AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, const WallContacts<D>& c
   const Vec<D>& Uw = s.particles.velocity[w];
   const double invDt = 1.0 / s.dt;
   const bool inlet = s.particles.isInlet(w);
-  double velocitySum = 0;      // sum_f W n_f.(u_f - U_w) n_f.r_wf / dt
+  double velocitySum = 0;      // sum_f W n_f.(u_f - U_w) n_f.r_wf
   double previousPressure = 0; // sum_f W p_f from the last step, the estimate for the cap
   for (Index k = nl.begin(w); k < nl.end(w); ++k) {
     const Index f = nl.j[k];
@@ -67,14 +67,14 @@ AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, const WallContacts<D>& c
                            : Vec<D>(contacts.lone[f] ? Vec<D>(n * n.dot(forces)) : forces);
     row.weightSum += s.weights.w[k];
     sum += s.weights.w[k] * a.dot(nl.rij[k]);
-    if (!inlet) velocitySum += s.weights.w[k] * n.dot(s.particles.velocity[f] - Uw) * invDt * n.dot(nl.rij[k]);
+    if (!inlet) velocitySum += s.weights.w[k] * n.dot(s.particles.velocity[f] - Uw) * n.dot(nl.rij[k]);
     previousPressure += s.weights.w[k] * s.particles.pressure[f];
   }
   if (row.weightSum > 0) {
     const double forcesPart = s.rho0 * sum / row.weightSum;
     // Eq. 11b: the velocity term may lower the wall to ambient pressure, not below.
     const double floor = std::max(0.0, previousPressure / row.weightSum + forcesPart);
-    row.rhs = forcesPart + std::max(s.rho0 * velocitySum / row.weightSum, -floor);
+    row.rhs = forcesPart + std::max(s.rho0 * velocitySum * invDt / row.weightSum, -floor);
   }
   return row;
 }
