@@ -16,8 +16,8 @@ every 5 ms and write particles every 0.1 s:
   - the interior density error as specific volume: the mean Voronoi cell volume of the
     interior particles against d0^D (tests/support/specificVolume.py) at t = 0.1, 0.2, ...
     endTime, |mean over the samples of (slab - 2D)| at most VOLUME (issue 19: 0.2
-    percentage points). Checked on each run's t = 0 lattice (0 exactly; stretched by 1e-3,
-    (1.001)^D - 1 exactly);
+    percentage points). Checked on each run's t = 0 lattice (0; stretched by 1e-3,
+    (1.001)^D - 1; both to 1e-3 pp, Qhull's joggle of the input moving them by 6e-5 pp);
   - eq. 22's interior mode (densityError, histogram bins 0.05 pp) averaged over the 5 ms
     samples, |mean mode3D - mean mode2D|, printed against the issue's 0.2 pp and asserted
     against a guard. A single sample's mode is no measure: the 2D run's 1000 interior
@@ -33,14 +33,13 @@ per-particle values is no measure (their spread is 2.5 %, fifty bins), so their 
 Both are properties of the method, not of the dimension: the slab holds the 2D solution,
 so any difference is the 3D code's. The slab's front is compared with the 2D front
 interpolated to the slab's sample times. Measured (docs/validation.md, "Quasi-2D slab"),
-2026-12-03, with the wall row's eq. 11b: at d0 = 2 cm the largest front difference is
-3.4 % (t = 0.38 s), specific volumes 0.079 pp apart, eq. 22 modes 0.048 pp; at d0 = 1 cm
-(ctest label long) 3.69 % (t = 0.41 s, after the slab's tip breaks off), 0.051 pp, eq. 22
-modes 0.073-0.10 pp; at d0 = 5 mm (long.quasi2DSlabFine, 40 min for the slab on two
-threads) 1.20 % (t = 0.215 s), eq. 22 modes 0.208 pp. At 5 mm the issue's 2 % is the
-guard; at 2 and 1 cm, where it is not met, the guard is about a third above the measured
-difference (4.5 % at 2 cm, 5.5 % at 1 cm), so a change that makes the 3D code depart
-further from 2D fails; eq. 22's guard at 5 mm is 0.28 pp on the same rule. What separates
+2026-12-03, with the wall row's eq. 11b, one thread: largest front difference 3.4 % (2 cm,
+t = 0.38 s), 1.41 % (1 cm, t = 0.356 s), 1.14 % (5 mm, t = 0.215 s); specific volumes 0.079, 0.051 and
+0.005 pp apart; eq. 22 modes 0.048, 0.103 and 0.198 pp apart. On two threads the 1 cm
+slab's tip breaks off early and its front differs by 3.69 % (modes 0.073 pp); at 5 mm
+1.20 % and 0.208 pp. At 5 mm the issue's 2 % is the guard; at 2 and 1 cm, where it is not
+always met, the guard is about a third above the largest measured difference (4.5 % at
+2 cm, 5.5 % at 1 cm), so a change that makes the 3D code depart further from 2D fails; eq. 22's guard at 5 mm is 0.28 pp on the same rule. What separates
 the coarse fronts: the fitted normal of eq. (6b) at the tip (with the detector's normal the
 fronts agree within 0.9 % at 2 cm) and the volume correction, whose 3D sum pulls 2.54 times
 harder on an extruded lattice (without it 1.0 % at 1 cm; docs/validation.md).
@@ -56,8 +55,9 @@ FRONT = 0.02          # issue 19's bound on the surge front (relative), printed
 VOLUME = 0.2          # issue 19's bound on the interior density error (pp), asserted on the specific volume
 MODE = 0.2            # the same bound on eq. 22's interior mode, printed
 WRITE = 0.1           # particle files every 0.1 s: the specific volume's samples
+VOLUME_EXACT = 1e-3   # pp: the lattice's measure off exact by Qhull's joggle (6e-5 pp at 5 mm measured)
 GUARD_FRONT = {0.02: 0.045, 0.01: 0.055, 0.005: FRONT}  # asserted, by d0: 3.4, 3.69, 1.20 % measured (docstring)
-GUARD_MODE = {0.005: 0.28}  # asserted on eq. 22's modes, by d0 (else MODE): 0.0015, 0.073, 0.208 pp measured
+GUARD_MODE = {0.005: 0.28}  # asserted on eq. 22's modes, by d0 (else MODE): 0.048, 0.073-0.103, 0.198-0.208 pp measured
 
 CONTROL = """FoamFile { format ascii; class dictionary; object controlDict; }
 startFrom latestTime; startTime 0; stopAt endTime; endTime %(endTime)s;
@@ -149,7 +149,7 @@ def volume_means(case, D, d0, depth):
                                                   ("lattice stretched by 1e-3", stretched, depth * d0 * 1.001,
                                                    100 * (1.001 ** D - 1))):
                 e, opened = sv.errors(parts, d0, D, () if D == 2 else ((2, 0.0, length),))
-                st.check(opened == 0 and abs(e.mean() - expected) < 1e-6,
+                st.check(opened == 0 and abs(e.mean() - expected) < VOLUME_EXACT,
                          "%dD t = 0, %s: specific-volume error %.6f %% (exact %.6f %%), %d open cells"
                          % (D, what, e.mean(), expected, opened))
             continue

@@ -27,7 +27,7 @@ Asserted, in each dimension:
     (2D) and 5.5 % (3D), and 4.5 % at t = 1 s in 2D against 2.6 % with dt halved at L/80:
     the error of a coarse step, first order in dt;
   - the mean specific-volume error of the particles (their Voronoi cells against d0^D,
-    tests/support/specificVolume.py) is zero to 1e-6 %: in a periodic box the cells tile
+    tests/support/specificVolume.py) is zero to 1e-4 %: in a periodic box the cells tile
     it, so this checks the measure and its periodic copies, not the flow.
 Printed: eq. 22's mean over the particles at the end. In 2D it stays within 0.1 % of zero
 (-0.03 % at t = 2 s, L/40); in 3D it rises to +0.26 % by t = 2 s (the particles leave
@@ -117,7 +117,7 @@ def main():
         particles["surface"] = np.zeros(len(particles["type"]))  # every particle is interior here
         periodic = [(0, 0.0, 1.0), (1, 0.0, 1.0)] + ([(2, 0.0, DEPTH * d0)] if D == 3 else [])
         volume, opened = sv.errors(particles, d0, D, periodic)
-        st.check(opened == 0 and abs(volume.mean()) < 1e-6,
+        st.check(opened == 0 and abs(volume.mean()) < 1e-4,
                  "%dD, t = %g: mean specific-volume error %.2e %% (the cells tile the box: 0), %d open cells"
                  % (D, t, volume.mean(), opened))
         print("%dD, t = %g: eq. 22 mean over the particles %.3f %% (number density unchanged)"
