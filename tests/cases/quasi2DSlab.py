@@ -39,9 +39,10 @@ t = 0.38 s), 1.41 % (1 cm, t = 0.356 s), 1.14 % (5 mm, t = 0.215 s); specific vo
 slab's tip breaks off early and its front differs by 3.69 % (modes 0.073 pp); at 5 mm
 1.20 % and 0.208 pp. At 5 mm the issue's 2 % is the guard; at 2 and 1 cm, where it is not
 always met, the guard is about a third above the largest measured difference (4.5 % at
-2 cm, 5.5 % at 1 cm), so a change that makes the 3D code depart further from 2D fails; eq. 22's guard at 5 mm is 0.28 pp on the same rule. What separates
-the coarse fronts: the fitted normal of eq. (6b) at the tip (with the detector's normal the
-fronts agree within 0.9 % at 2 cm) and the volume correction, whose 3D sum pulls 2.54 times
+2 cm, 5.5 % at 1 cm), so a change that makes the 3D code depart further from 2D fails;
+eq. 22's guard at 5 mm is 0.28 pp on the same rule. What separates the coarse fronts: the
+fitted normal of eq. (6b) at the tip (with the detector's normal the fronts agree within
+0.9 % at 2 cm) and the volume correction, whose 3D sum pulls 2.54 times
 harder on an extruded lattice (without it 1.0 % at 1 cm; docs/validation.md).
 """
 import math
@@ -188,7 +189,8 @@ def main():
     volume = {D: dict(volume_means(cases[D], D, a.spacing, a.depth)) for D in cases}
     common = sorted(set(volume[2]) & set(volume[3]))
     for t in common:
-        print("t = %g s: mean interior specific-volume error 2D %.3f %%, slab %.3f %%" % (t, volume[2][t], volume[3][t]))
+        print("t = %g s: mean interior specific-volume error 2D %.3f %%, slab %.3f %%"
+              % (t, volume[2][t], volume[3][t]))
     worstVolume = (abs(sum(volume[3][t] - volume[2][t] for t in common) / max(1, len(common))), a.endTime)
     st.check(len(common) >= 1, "specific volume sampled at %d common times" % len(common))
     for what, worst, bound in (("surge front: largest relative difference", worstFront, FRONT),
