@@ -5,7 +5,7 @@ docs/method.md, section 12.3).
 Why next to eq. 22: eq. 22 reads density from the kernel sum, whose value at a fixed number
 density depends on how the particles are arranged. With the cubic spline at h = 1.2 d0 a 3D
 arrangement relaxed by the shift reads about 0.3 % under-dense at exactly the lattice's
-number density, a 2D one about 0 (docs/validation.md, "Quasi-2D slab"), so eq. 22 cannot
+number density, a 2D one about 0 (docs/validation.md, "Taylor-Green vortex"), so eq. 22 cannot
 compare the two dimensions to 0.2 pp. The Voronoi cell volume is the volume a particle
 occupies, whatever the arrangement: the lattice reads 0 and a uniform stretch by (1 + e)
 reads (1 + e)^D - 1 (to Qhull's joggle, below 1e-4 %).
