@@ -26,9 +26,9 @@ set(CPACK_DEBIAN_PACKAGE_DEPENDS
     "libc6, libgcc-s1, libstdc++6, libgomp1, libboost-program-options1.74.0, libmuparser2v5, libvtk9.1, \
 libumfpack5, libklu1, libamd2, libcolamd2, libbtf1, libcholmod3, libsuitesparseconfig5, \
 python3, python3-numpy, python3-matplotlib, python3-vtk9")
-# A build with hypre (-DSHIZUKU_HYPRE=ON) also needs hypre's and MPI's libraries:
-# dpkg-shlibdeps adds them, read from the programs themselves.
-if(SHIZUKU_HYPRE_LINKED)
+# A build with MPI (the default) or hypre also needs MPI's, Zoltan's, PETSc's and hypre's
+# libraries: dpkg-shlibdeps adds them, read from the programs themselves.
+if(SHIZUKU_HYPRE_LINKED OR SHIZUKU_MPI_LINKED)
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 endif()
 include(CPack)

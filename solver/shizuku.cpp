@@ -1,6 +1,7 @@
 // shizuku: the ISPH solver (docs/design.md 1.1).
 //
 //   shizuku -case tutorials/damBreak          run the case
+//   mpirun -np N shizuku -case DIR -parallel  run on N ranks (docs/parallel.md)
 //   shizuku -case DIR -dryRun                 read and check everything, print the pipeline, exit 0
 //   shizuku -case DIR -noFunctionObjects      run without function objects
 //   shizuku -version                          print the version and the commit it was built from
@@ -17,6 +18,8 @@
 #include "core/Log.hpp"
 #include "core/Parameter.hpp"
 #include "isph/Simulation.hpp"
+#include "parallel/Communicator.hpp"
+#include "parallel/RankStart.hpp"
 #include "ShizukuCommit.hpp"  // generated at build time (cmake/ShizukuCommit.cmake)
 #include <boost/program_options.hpp>
 #include <ctime>
@@ -83,6 +86,7 @@ int main(int argc, char** argv) {
       ("case", po::value<std::string>()->default_value("."), "case directory (default: the current folder)")
       ("dryRun", "read and check the whole case, print the active pipeline and exit 0 without running")
       ("noFunctionObjects", "run without function objects")
+      ("parallel", "run on the ranks the MPI launcher started: mpirun -np N shizuku -case DIR -parallel")
       ("keywords", po::value<std::string>(), "print the declared keywords and exit: markdown (tables) or scopes")
       ("scope", po::value<std::string>()->default_value(""), "with -keywords markdown: only this dictionary scope")
       ("threads", po::value<int>(), "OpenMP threads, 1 to 4 x the hardware threads (default: OMP_NUM_THREADS or all cores)");
@@ -96,6 +100,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (vm.count("keywords")) return printKeywords(vm["keywords"].as<std::string>(), vm["scope"].as<std::string>());
+  if (auto status = startRanks(vm.count("parallel"), "shizuku", &argc, &argv)) return *status;
   const std::string dir = vm["case"].as<std::string>();
   if (auto status = applyThreadsOption(vm, "shizuku")) return *status;
 
@@ -109,6 +114,7 @@ int main(int argc, char** argv) {
   info(cat(kVersion, " - incompressible SPH with SPH(2) operators and density-corrected shifting"));
   info(cat("Command : ", command));
   info(cat("Case    : ", dir));
+  if (Communicator::world().started()) info(cat("Ranks   : ", Communicator::world().size()));
   info(cat("Threads : ", omp_get_max_threads()));
   info(cat("Host    : ", host));
   info(cat("Date    : ", date));

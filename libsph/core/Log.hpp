@@ -1,5 +1,7 @@
 // The run log: everything the solver tells the user goes through here, to
-// standard output (and optionally a file), line buffered.
+// standard output (and optionally a file), line buffered. In a distributed run only
+// rank 0 speaks (`silent` on the others): every rank reads the same case and reaches
+// the same decisions, so one voice reports them once.
 #pragma once
 #include <iostream>
 #include <sstream>
@@ -10,10 +12,11 @@ namespace shizuku {
 class Log {
  public:
   static Log& get() { static Log l; return l; }
-  void line(const std::string& s) { std::cout << s << '\n' << std::flush; }
-  void warning(const std::string& s) { std::cout << "Warning: " << s << '\n' << std::flush; }
-  void error(const std::string& s) { std::cerr << "Error: " << s << '\n' << std::flush; }
-  bool quiet = false;
+  void line(const std::string& s) { if (!silent) std::cout << s << '\n' << std::flush; }
+  void warning(const std::string& s) { if (!silent) std::cout << "Warning: " << s << '\n' << std::flush; }
+  void error(const std::string& s) { if (!silent) std::cerr << "Error: " << s << '\n' << std::flush; }
+  bool quiet = false;   // progress and information off (errors and warnings still shown)
+  bool silent = false;  // nothing at all (the ranks other than 0)
 };
 
 // Format helper: fmt("dt = ", dt) -> "dt = 1e-4"

@@ -1,0 +1,112 @@
+// The domain decomposition of a distributed run: see DomainDecomposition.hpp.
+#include "decomposition/DomainDecomposition.hpp"
+#include "decomposition/ParticlePacking.hpp"
+#include <algorithm>
+#include <numeric>
+
+namespace shizuku {
+
+template <int D>
+DomainDecomposition<D>::DomainDecomposition(const DecompositionSettings& settings, double haloWidth,
+                                            const PeriodicBox<D>& box)
+    : settings_(settings), zoltan_(settings.method, D), halo_(haloWidth, box) {}
+
+template <int D>
+void DomainDecomposition<D>::start(ParticleSet<D>& P) {
+  const auto& world = Communicator::world();
+  const std::size_t n = P.size(), first = n * world.rank() / world.size(), last = n * (world.rank() + 1) / world.size();
+  std::vector<std::uint8_t> outside(n, 0);
+  for (std::size_t i = 0; i < n; ++i) outside[i] = i < first || i >= last;
+  P.removeMarked(outside);
+  partition(P, true);
+  migrate(P);
+  distribute(P);
+}
+
+template <int D>
+void DomainDecomposition<D>::partition(const ParticleSet<D>& P, bool fromScratch) {
+  const std::size_t n = P.size();
+  coords_.resize(n * D);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int a = 0; a < D; ++a) coords_[i * D + a] = P.position[i][a];
+  zoltan_.partition(coords_, P.id, fromScratch, owner_);
+  ++stats_.repartitions;
+}
+
+template <int D>
+void DomainDecomposition<D>::distribute(ParticleSet<D>& P) {
+  const auto& world = Communicator::world();
+  if (haloBuilt_) halo_.strip(P);
+  const long mine = long(P.size()), total = world.sum(mine), most = world.max(mine);
+  const double mean = double(total) / world.size();
+  if (mean > 0 && most / mean - 1 > settings_.rebalanceThreshold) {
+    partition(P, false);
+  } else {
+    owner_.resize(P.size());
+    for (std::size_t i = 0; i < P.size(); ++i) owner_[i] = zoltan_.ownerOf(P.position[i].data());
+  }
+  migrate(P);
+  halo_.build(P);
+  haloBuilt_ = true;
+  const long owned = long(halo_.numOwned());
+  stats_.owned = owned;
+  stats_.ghosts = long(halo_.numGhosts());
+  stats_.neighbourRanks = halo_.numNeighbourRanks();
+  stats_.imbalance = mean > 0 ? world.max(owned) / mean - 1 : 0;
+}
+
+// Send every particle whose owner is another rank to it; append the ones received.
+template <int D>
+void DomainDecomposition<D>::migrate(ParticleSet<D>& P) {
+  const auto& world = Communicator::world();
+  const int me = world.rank(), nranks = world.size();
+  long mask = 0;
+  for (long m : world.allGather(ParticlePacking<D>::fieldMask(P))) mask |= m;
+  ParticlePacking<D>::ensureFields(P, mask);
+  const std::size_t bytes = ParticlePacking<D>::bytesPerParticle(P, mask);
+  const std::size_t n = P.size();
+  std::vector<long> sendCount(nranks, 0);
+  for (std::size_t i = 0; i < n; ++i) sendCount[owner_[i]] += owner_[i] != me;
+  const std::vector<long> recvCount = world.exchangeCounts(sendCount);
+  std::vector<long> sendStart(nranks + 1, 0);
+  for (int r = 0; r < nranks; ++r) sendStart[r + 1] = sendStart[r] + sendCount[r];
+  sendBuf_.resize(std::size_t(sendStart[nranks]) * bytes);
+  std::vector<long> fill(sendStart.begin(), sendStart.end() - 1);
+  leaving_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (owner_[i] != me) {
+      ParticlePacking<D>::pack(P, mask, i, sendBuf_.data() + std::size_t(fill[owner_[i]]++) * bytes);
+      leaving_[i] = 1;
+    }
+  std::vector<int> ranks;
+  std::vector<const char*> sendPtr;
+  std::vector<char*> recvPtr;
+  std::vector<long> sendBytes, recvBytes;
+  long received = 0;
+  for (int r = 0; r < nranks; ++r) received += recvCount[r];
+  recvBuf_.resize(std::size_t(received) * bytes);
+  long at = 0;
+  for (int r = 0; r < nranks; ++r) {
+    if (r == me || (sendCount[r] == 0 && recvCount[r] == 0)) continue;
+    ranks.push_back(r);
+    sendPtr.push_back(sendBuf_.data() + std::size_t(sendStart[r]) * bytes);
+    sendBytes.push_back(sendCount[r] * long(bytes));
+    recvPtr.push_back(recvBuf_.data() + std::size_t(at) * bytes);
+    recvBytes.push_back(recvCount[r] * long(bytes));
+    at += recvCount[r];
+  }
+  world.exchange(ranks, sendPtr, sendBytes, recvPtr, recvBytes, 13);
+  const long sent = sendStart[nranks];
+  stats_.migrated = world.sum(sent);
+  P.removeMarked(leaving_);
+  const std::size_t kept = P.size();
+  P.resize(kept + std::size_t(received));
+  ParticlePacking<D>::ensureFields(P, mask);
+  const char* in = recvBuf_.data();
+  for (long k = 0; k < received; ++k) in = ParticlePacking<D>::unpack(P, mask, kept + std::size_t(k), in);
+}
+
+template class DomainDecomposition<2>;
+template class DomainDecomposition<3>;
+
+}  // namespace shizuku

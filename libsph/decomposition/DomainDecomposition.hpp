@@ -1,0 +1,59 @@
+// The domain decomposition of a distributed run (docs/parallel.md 3-4): which rank owns
+// which particle, moving particles to their owners, and the halo.
+//   start():       every rank holds the same whole set (generated or read); each keeps a
+//                  contiguous slice, Zoltan partitions them from scratch, and the
+//                  particles move to their owners
+//   distribute():  before each step's analysis: ghosts dropped, particles that left the
+//                  rank's region sent to the rank whose region holds them (Zoltan's point
+//                  assignment on the kept cuts), a repartition when the particle counts
+//                  differ by more than rebalanceThreshold (max / mean - 1), the halo built
+// Keys (system/decomposeParDict, optional): method RCB|HSFC; rebalanceThreshold 0.1.
+#pragma once
+#include "decomposition/Halo.hpp"
+#include "parallel/ZoltanPartitioner.hpp"
+#include <memory>
+#include <string>
+
+namespace shizuku {
+
+struct DecompositionSettings {
+  std::string method = "RCB";
+  double rebalanceThreshold = 0.1;
+};
+
+// Statistics for the log and docs/parallel.md.
+struct DecompositionStats {
+  long owned = 0, ghosts = 0, migrated = 0, repartitions = 0;
+  int neighbourRanks = 0;
+  double imbalance = 0;  // max owned / mean owned - 1, over the ranks
+};
+
+template <int D>
+class DomainDecomposition {
+ public:
+  DomainDecomposition(const DecompositionSettings& settings, double haloWidth, const PeriodicBox<D>& box);
+  // P holds the whole set on every rank; afterwards this rank's own particles. Collective.
+  void start(ParticleSet<D>& P);
+  // Drop the ghosts, move particles to their owners (repartition if unbalanced), build the halo.
+  void distribute(ParticleSet<D>& P);
+  void stripGhosts(ParticleSet<D>& P) const { halo_.strip(P); }
+  const Halo<D>& halo() const { return halo_; }
+  const DecompositionStats& stats() const { return stats_; }
+  const DecompositionSettings& settings() const { return settings_; }
+
+ private:
+  void partition(const ParticleSet<D>& P, bool fromScratch);
+  void migrate(ParticleSet<D>& P);
+
+  DecompositionSettings settings_;
+  ZoltanPartitioner zoltan_;
+  Halo<D> halo_;
+  DecompositionStats stats_;
+  bool haloBuilt_ = false;
+  std::vector<int> owner_;
+  std::vector<double> coords_;
+  std::vector<std::uint8_t> leaving_;
+  std::vector<char> sendBuf_, recvBuf_;
+};
+
+}  // namespace shizuku

@@ -1,0 +1,175 @@
+// Collective operations across ranks: see Communicator.hpp.
+#include "parallel/Communicator.hpp"
+#include <cstdlib>
+#include <numeric>
+#include <stdexcept>
+
+#ifdef SHIZUKU_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace shizuku {
+
+Communicator& Communicator::world() {
+  static Communicator c;
+  return c;
+}
+
+bool Communicator::builtWithMpi() {
+#ifdef SHIZUKU_HAVE_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+namespace {
+std::optional<int> environmentInt(const char* const* names) {
+  for (const char* const* n = names; *n; ++n)
+    if (const char* v = std::getenv(*n)) {
+      char* end = nullptr;
+      const long x = std::strtol(v, &end, 10);
+      if (end != v && *end == '\0' && x >= 0) return int(x);
+    }
+  return std::nullopt;
+}
+}  // namespace
+
+// Open MPI, MPICH/Hydra and Slurm spell the rank count differently.
+std::optional<int> Communicator::launcherSize() {
+  static const char* const names[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "SLURM_NTASKS", nullptr};
+  return environmentInt(names);
+}
+
+std::optional<int> Communicator::launcherRank() {
+  static const char* const names[] = {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK", "SLURM_PROCID", nullptr};
+  return environmentInt(names);
+}
+
+#ifdef SHIZUKU_HAVE_MPI
+
+namespace {
+void finaliseMpi() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (!finalized) MPI_Finalize();
+}
+template <class T> MPI_Datatype mpiType();
+template <> MPI_Datatype mpiType<double>() { return MPI_DOUBLE; }
+template <> MPI_Datatype mpiType<long>() { return MPI_LONG; }
+
+template <class T> T reduce(T x, MPI_Op op, bool started) {
+  if (!started) return x;
+  T r{};
+  MPI_Allreduce(&x, &r, 1, mpiType<T>(), op, MPI_COMM_WORLD);
+  return r;
+}
+}  // namespace
+
+void Communicator::start(int* argc, char*** argv) {
+  if (started_) return;
+  int initialised = 0, provided = 0;
+  MPI_Initialized(&initialised);
+  if (!initialised) {
+    MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+    std::atexit(finaliseMpi);
+  }
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  started_ = true;
+}
+
+double Communicator::sum(double x) const { return reduce(x, MPI_SUM, started_); }
+long Communicator::sum(long x) const { return reduce(x, MPI_SUM, started_); }
+double Communicator::max(double x) const { return reduce(x, MPI_MAX, started_); }
+long Communicator::max(long x) const { return reduce(x, MPI_MAX, started_); }
+double Communicator::min(double x) const { return reduce(x, MPI_MIN, started_); }
+
+void Communicator::sumInPlace(std::vector<double>& v) const {
+  if (started_ && !v.empty()) MPI_Allreduce(MPI_IN_PLACE, v.data(), int(v.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+}
+void Communicator::sumInPlace(std::vector<long>& v) const {
+  if (started_ && !v.empty()) MPI_Allreduce(MPI_IN_PLACE, v.data(), int(v.size()), MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+}
+
+long Communicator::exclusivePrefixSum(long x) const {
+  if (!started_) return 0;
+  long r = 0;
+  MPI_Exscan(&x, &r, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
+  return rank_ == 0 ? 0 : r;  // MPI_Exscan leaves rank 0's result undefined
+}
+
+std::vector<double> Communicator::allGather(const std::vector<double>& mine) const {
+  if (!started_) return mine;
+  std::vector<double> all(mine.size() * std::size_t(size_));
+  MPI_Allgather(mine.data(), int(mine.size()), MPI_DOUBLE, all.data(), int(mine.size()), MPI_DOUBLE, MPI_COMM_WORLD);
+  return all;
+}
+
+std::vector<long> Communicator::allGather(long mine) const {
+  if (!started_) return {mine};
+  std::vector<long> all(static_cast<std::size_t>(size_));
+  MPI_Allgather(&mine, 1, MPI_LONG, all.data(), 1, MPI_LONG, MPI_COMM_WORLD);
+  return all;
+}
+
+std::vector<long> Communicator::exchangeCounts(const std::vector<long>& sendCounts) const {
+  if (!started_) return sendCounts;
+  std::vector<long> recv(static_cast<std::size_t>(size_));
+  MPI_Alltoall(sendCounts.data(), 1, MPI_LONG, recv.data(), 1, MPI_LONG, MPI_COMM_WORLD);
+  return recv;
+}
+
+void Communicator::exchange(const std::vector<int>& ranks, const std::vector<const char*>& send,
+                            const std::vector<long>& sendBytes, const std::vector<char*>& recv,
+                            const std::vector<long>& recvBytes, int tag) const {
+  if (!started_ || ranks.empty()) return;
+  // At most two requests per neighbour; a fixed-capacity buffer reused between calls.
+  static thread_local std::vector<MPI_Request> requests;
+  requests.clear();
+  for (std::size_t k = 0; k < ranks.size(); ++k)
+    if (recvBytes[k] > 0) {
+      requests.emplace_back();
+      MPI_Irecv(recv[k], int(recvBytes[k]), MPI_BYTE, ranks[k], tag, MPI_COMM_WORLD, &requests.back());
+    }
+  for (std::size_t k = 0; k < ranks.size(); ++k)
+    if (sendBytes[k] > 0) {
+      requests.emplace_back();
+      MPI_Isend(send[k], int(sendBytes[k]), MPI_BYTE, ranks[k], tag, MPI_COMM_WORLD, &requests.back());
+    }
+  MPI_Waitall(int(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+}
+
+void Communicator::barrier() const {
+  if (started_) MPI_Barrier(MPI_COMM_WORLD);
+}
+
+void Communicator::abort(int status) const {
+  if (started_) MPI_Abort(MPI_COMM_WORLD, status);
+  std::exit(status);
+}
+
+#else  // a serial build: one rank, every operation the identity
+
+void Communicator::start(int*, char***) {
+  throw std::runtime_error("this shizuku was built without MPI (cmake -DSHIZUKU_MPI=OFF): it cannot run in parallel");
+}
+double Communicator::sum(double x) const { return x; }
+long Communicator::sum(long x) const { return x; }
+double Communicator::max(double x) const { return x; }
+long Communicator::max(long x) const { return x; }
+double Communicator::min(double x) const { return x; }
+void Communicator::sumInPlace(std::vector<double>&) const {}
+void Communicator::sumInPlace(std::vector<long>&) const {}
+long Communicator::exclusivePrefixSum(long) const { return 0; }
+std::vector<double> Communicator::allGather(const std::vector<double>& mine) const { return mine; }
+std::vector<long> Communicator::allGather(long mine) const { return {mine}; }
+std::vector<long> Communicator::exchangeCounts(const std::vector<long>& c) const { return c; }
+void Communicator::exchange(const std::vector<int>&, const std::vector<const char*>&, const std::vector<long>&,
+                            const std::vector<char*>&, const std::vector<long>&, int) const {}
+void Communicator::barrier() const {}
+void Communicator::abort(int status) const { std::exit(status); }
+
+#endif
+
+}  // namespace shizuku
