@@ -24,6 +24,7 @@ void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u, bool ou
     }
     u[w] = ws > 0 ? Vec<D>(sum / ws) : s.particles.velocity[w];
   }
+  s.exchange(u);
 }
 
 template <int D>
@@ -46,6 +47,8 @@ void WallContacts<D>::update(const FlowState<D>& s) {
     normal[f] = len > 0 ? Vec<D>(sum / len) : Vec<D>::Zero();
     lone[f] = alone;
   }
+  s.exchange(normal);  // a wall row reads its fluid neighbours' contacts
+  s.exchange(lone);
 }
 
 template <int D>

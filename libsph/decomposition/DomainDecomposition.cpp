@@ -36,7 +36,7 @@ void DomainDecomposition<D>::partition(const ParticleSet<D>& P, bool fromScratch
 template <int D>
 void DomainDecomposition<D>::distribute(ParticleSet<D>& P) {
   const auto& world = Communicator::world();
-  if (haloBuilt_) halo_.strip(P);
+  stripGhosts(P);
   const long mine = long(P.size()), total = world.sum(mine), most = world.max(mine);
   const double mean = double(total) / world.size();
   if (mean > 0 && most / mean - 1 > settings_.rebalanceThreshold) {
@@ -47,7 +47,7 @@ void DomainDecomposition<D>::distribute(ParticleSet<D>& P) {
   }
   migrate(P);
   halo_.build(P);
-  haloBuilt_ = true;
+  ghostsPresent_ = true;
   const long owned = long(halo_.numOwned());
   stats_.owned = owned;
   stats_.ghosts = long(halo_.numGhosts());

@@ -9,6 +9,7 @@
 //                  differ by more than rebalanceThreshold (max / mean - 1), the halo built
 // Keys (system/decomposeParDict, optional): method RCB|HSFC; rebalanceThreshold 0.1.
 #pragma once
+#include "core/Dictionary.hpp"
 #include "decomposition/Halo.hpp"
 #include "parallel/ZoltanPartitioner.hpp"
 #include <memory>
@@ -19,6 +20,9 @@ namespace shizuku {
 struct DecompositionSettings {
   std::string method = "RCB";
   double rebalanceThreshold = 0.1;
+  // From system/decomposeParDict (nullptr: the defaults); read in serial runs too, so a
+  // misspelt key is reported wherever the case runs.
+  static DecompositionSettings read(const Dictionary* dict);
 };
 
 // Statistics for the log and docs/parallel.md.
@@ -36,7 +40,13 @@ class DomainDecomposition {
   void start(ParticleSet<D>& P);
   // Drop the ghosts, move particles to their owners (repartition if unbalanced), build the halo.
   void distribute(ParticleSet<D>& P);
-  void stripGhosts(ParticleSet<D>& P) const { halo_.strip(P); }
+  // Remove the ghosts if P holds them (after the step's last stage, before a reordering).
+  void stripGhosts(ParticleSet<D>& P) {
+    if (ghostsPresent_) halo_.strip(P);
+    ghostsPresent_ = false;
+  }
+  // P was replaced by this rank's own particles alone (the last good state restored).
+  void ghostsDropped() { ghostsPresent_ = false; }
   const Halo<D>& halo() const { return halo_; }
   const DecompositionStats& stats() const { return stats_; }
   const DecompositionSettings& settings() const { return settings_; }
@@ -49,7 +59,7 @@ class DomainDecomposition {
   ZoltanPartitioner zoltan_;
   Halo<D> halo_;
   DecompositionStats stats_;
-  bool haloBuilt_ = false;
+  bool ghostsPresent_ = false;
   std::vector<int> owner_;
   std::vector<double> coords_;
   std::vector<std::uint8_t> leaving_;

@@ -55,7 +55,7 @@ bool ParticleShifting<D>::taylorCorrected(SurfaceClass c) const {
 
 template <int D>
 void ParticleShifting<D>::allocate(FlowState<D>& s) {
-  s.particles.shift.assign(s.size(), Vec<D>::Zero());
+  s.particles.shift.resize(s.size(), Vec<D>::Zero());
   dr_.resize(s.size());
   if (taylor_ != TaylorCorrection::off) gradU_.resize(s.size());
   for (auto& t : terms_) t->allocate(s);

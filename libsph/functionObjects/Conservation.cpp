@@ -1,5 +1,6 @@
 // Function object `conservation`: see Conservation.hpp (docs/design.md 1.3).
 #include "functionObjects/Conservation.hpp"
+#include "parallel/Communicator.hpp"
 
 namespace shizuku {
 
@@ -32,7 +33,7 @@ ConservationValues<D> Conservation<D>::compute(const FlowState<D>& s) {
   const auto& p = s.particles;
   const double m = p.mass;
   thread_local std::vector<Sums<D>> partial;
-  const Sums<D> t = blockReduce(p.size(), partial, [&](Sums<D>& a, std::size_t i) {
+  Sums<D> t = blockReduce(s.numOwned(), partial, [&](Sums<D>& a, std::size_t i) {
     if (!p.isFluid(i)) return;
     const Vec<D>& u = p.velocity[i];
     a.count += 1;
@@ -43,14 +44,28 @@ ConservationValues<D> Conservation<D>::compute(const FlowState<D>& s) {
     a.momentum += m * u;
     a.angular += m * lift<D>(p.position[i]).cross(lift<D>(u));
   });
+  // Every rank's own particles (docs/parallel.md 5); the removal counts likewise.
+  const auto& world = Communicator::world();
+  FluidBalance balance = s.balance;
+  if (world.isParallel()) {
+    std::vector<double> sums = {t.volume, t.fluidVolume, t.kinetic, t.count, balance.removedMass,
+                                double(balance.released), double(balance.captured)};
+    for (int a = 0; a < D; ++a) sums.push_back(t.momentum[a]);
+    for (int a = 0; a < 3; ++a) sums.push_back(t.angular[a]);
+    world.sumInPlace(sums);
+    t.volume = sums[0]; t.fluidVolume = sums[1]; t.kinetic = sums[2]; t.count = sums[3];
+    balance.removedMass = sums[4]; balance.released = long(sums[5]); balance.captured = long(sums[6]);
+    for (int a = 0; a < D; ++a) t.momentum[a] = sums[7 + a];
+    for (int a = 0; a < 3; ++a) t.angular[a] = sums[7 + D + a];
+  }
   ConservationValues<D> v;
   v.volume = t.volume;
   v.fluidVolume = t.fluidVolume;
   v.nominalVolume = t.count * m / s.rho0;
   v.fluidMass = t.count * m;
-  v.removedMass = s.balance.removedMass;
-  v.releasedMass = double(s.balance.released) * m;
-  v.capturedMass = double(s.balance.captured) * m;
+  v.removedMass = balance.removedMass;
+  v.releasedMass = double(balance.released) * m;
+  v.capturedMass = double(balance.captured) * m;
   v.kineticEnergy = t.kinetic;
   v.momentum = t.momentum;
   if constexpr (D == 2) v.angularMomentum[0] = t.angular[2];

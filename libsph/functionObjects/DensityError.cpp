@@ -3,6 +3,7 @@
 #include "functionObjects/DensityError.hpp"
 #include "core/Parameter.hpp"
 #include "io/TimeName.hpp"
+#include "parallel/Communicator.hpp"
 #include <cmath>
 #include <limits>
 #include <omp.h>
@@ -47,7 +48,7 @@ template <int D>
 const DensityErrorResult& DensityError<D>::evaluate(const FlowState<D>& s) {
   const auto& p = s.particles;
   const double rho0 = s.rho0;
-  const std::size_t n = p.size();
+  const std::size_t n = s.numOwned();  // every rank counts its own particles; the counts are summed
   const auto error = [&](std::size_t i) { return densityErrorPercent(rho0, p.density[i]); };
 
   const DensityErrorSummary m = measureDensityError(s);
@@ -86,6 +87,17 @@ const DensityErrorResult& DensityError<D>::evaluate(const FlowState<D>& s) {
       result_.histInterior[k] += c[1 + k];
       result_.histAll[k] += c[nb + 1 + k];
     }
+  }
+  const auto& world = Communicator::world();
+  if (world.isParallel()) {
+    world.sumInPlace(result_.histInterior);
+    world.sumInPlace(result_.histAll);
+    std::vector<long> out = {result_.belowInterior, result_.aboveInterior, result_.belowAll, result_.aboveAll};
+    world.sumInPlace(out);
+    result_.belowInterior = out[0];
+    result_.aboveInterior = out[1];
+    result_.belowAll = out[2];
+    result_.aboveAll = out[3];
   }
   const auto mode = [&](const std::vector<long>& h) {
     int best = -1;

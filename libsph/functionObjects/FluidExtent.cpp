@@ -1,5 +1,6 @@
 // Function object `fluidExtent`: see FluidExtent.hpp (docs/design.md 1.3).
 #include "functionObjects/FluidExtent.hpp"
+#include "parallel/Communicator.hpp"
 #include "core/BlockReduce.hpp"
 #include "core/Parameter.hpp"
 #include <limits>
@@ -59,11 +60,16 @@ void FluidExtent<D>::compute(const FlowState<D>& s, Vec<D>& lo, Vec<D>& hi, int 
   const auto& p = s.particles;
   const bool lists = minNeighbours > 0 && s.neighbours.numParticles() == s.size();
   thread_local std::vector<Box<D>> partial;
-  const Box<D> b = blockReduce(p.size(), partial, [&](Box<D>& a, std::size_t i) {
+  Box<D> b = blockReduce(s.numOwned(), partial, [&](Box<D>& a, std::size_t i) {
     if (!p.isFluid(i) || (lists && !connected(s, i, minNeighbours))) return;
     a.lo = a.lo.cwiseMin(p.position[i]);
     a.hi = a.hi.cwiseMax(p.position[i]);
   });
+  const auto& world = Communicator::world();  // the box of every rank's own particles
+  for (int a = 0; a < D; ++a) {
+    b.lo[a] = world.min(b.lo[a]);
+    b.hi[a] = world.max(b.hi[a]);
+  }
   if (b.lo[0] > b.hi[0]) {  // no fluid particle
     lo = hi = Vec<D>::Constant(std::numeric_limits<double>::quiet_NaN());
   } else {

@@ -1,5 +1,6 @@
 // Function object `flux`: see Flux.hpp (docs/boundaries.md).
 #include "functionObjects/Flux.hpp"
+#include "parallel/Communicator.hpp"
 #include "core/BlockReduce.hpp"
 #include "core/Parameter.hpp"
 #include <cmath>
@@ -54,7 +55,7 @@ double Flux<D>::planeFlux(const FlowState<D>& s, const Vec<D>& point, const Vec<
                           const Vec<D>& lo, const Vec<D>& hi) {
   const auto& P = s.particles;
   thread_local std::vector<double> partial;
-  const double sum = blockReduce(P.size(), partial, [&](double& a, std::size_t i) {
+  const double own = blockReduce(s.numOwned(), partial, [&](double& a, std::size_t i) {
     if (!P.isFluid(i)) return;
     const Vec<D>& x = P.position[i];
     if (!(std::abs((x - point).dot(normal)) < 0.5 * delta)) return;
@@ -62,6 +63,7 @@ double Flux<D>::planeFlux(const FlowState<D>& s, const Vec<D>& point, const Vec<
       if (x[k] < lo[k] || x[k] > hi[k]) return;
     a += P.velocity[i].dot(normal);
   });
+  const double sum = Communicator::world().sum(own);  // every rank's own particles
   return s.V() * sum / delta;
 }
 

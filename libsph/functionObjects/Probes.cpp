@@ -1,6 +1,7 @@
 // Function object `probes`: Shepard-normalised SPH interpolation at points; see Probes.hpp.
 // Reads fields, points, minKernelSum through the declarations below.
 #include "functionObjects/Probes.hpp"
+#include "parallel/Communicator.hpp"
 #include "core/Log.hpp"
 #include "core/Parameter.hpp"
 #include <algorithm>
@@ -78,7 +79,7 @@ const double* Probes<D>::fieldData(const FlowState<D>& s, std::size_t f) const {
 template <int D>
 const std::vector<std::vector<double>>& Probes<D>::evaluate(const FlowState<D>& s) {
   const auto& p = s.particles;
-  const std::size_t n = p.size(), np = points_.size(), nf = fields_.size();
+  const std::size_t n = s.numOwned(), np = points_.size(), nf = fields_.size();
   const double support = s.kernel.support(), V = s.V();
   auto& data = fieldPtr_;
   data.resize(nf);
@@ -124,19 +125,20 @@ const std::vector<std::vector<double>>& Probes<D>::evaluate(const FlowState<D>& 
       }
     }
   }
+  // The blocks' sums in block order, then over the ranks (each sums its own particles).
+  sums_.assign(stride, 0.0);
+  for (std::size_t q = 0; q < stride; ++q)
+    for (long b = 0; b < nb; ++b) sums_[q] += blockSums_[std::size_t(b) * stride + q];
+  Communicator::world().sumInPlace(sums_);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t k = 0; k < np; ++k) {
-    std::vector<double>::size_type base = k * std::size_t(width);
-    double S = 0;
-    for (long b = 0; b < nb; ++b) S += blockSums_[std::size_t(b) * stride + base];
+    const std::size_t base = k * std::size_t(width);
+    const double S = sums_[base];
     kernelSum_[k] = S;
     int c0 = 1;
     for (std::size_t f = 0; f < nf; ++f) {
-      for (int c = 0; c < comps_[f]; ++c) {
-        double num = 0;
-        for (long b = 0; b < nb; ++b) num += blockSums_[std::size_t(b) * stride + base + c0 + c];
-        values_[f][k * comps_[f] + c] = S >= minKernelSum_ ? num / S : nan;
-      }
+      for (int c = 0; c < comps_[f]; ++c)
+        values_[f][k * comps_[f] + c] = S >= minKernelSum_ ? sums_[base + std::size_t(c0 + c)] / S : nan;
       c0 += comps_[f];
     }
   }

@@ -56,6 +56,7 @@ class Probes : public SampledFunctionObject<D> {
   std::vector<std::vector<double>> values_;
   std::vector<const double*> fieldPtr_;
   std::vector<double> blockSums_;  // per block: per point (1 + sum of comps) partial sums
+  std::vector<double> sums_;       // the same summed over the blocks (and the ranks)
 };
 
 extern template class Probes<2>;

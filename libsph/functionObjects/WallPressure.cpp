@@ -1,5 +1,6 @@
 // Function object `wallPressure`: see WallPressure.hpp (docs/postprocessing.md).
 #include "functionObjects/WallPressure.hpp"
+#include "parallel/Communicator.hpp"
 #include "core/Parameter.hpp"
 #include "particles/WallLattice.hpp"
 #include <algorithm>
@@ -228,14 +229,15 @@ void WallPressure<D>::buildTerms(const Dictionary& dict) {
   if (terms_.empty()) dict.error("centre", "the sensor covers no wall particle");
 }
 
-// Finds each term's particle by its lattice position (walls never move).
+// Finds each term's particle by its lattice position (walls never move) among this rank's
+// own particles; in a distributed run the terms are spread over the ranks (id -1: elsewhere).
 template <int D>
 void WallPressure<D>::locate(const FlowState<D>& s) {
   const auto& P = s.particles;
   const double tol = 1e-6 * wall_.d0;
   std::size_t found = 0;
   for (auto& t : terms_) t.id = -1;
-  for (std::size_t i = 0; i < P.size(); ++i) {
+  for (std::size_t i = 0; i < s.numOwned(); ++i) {
     if (!P.isWall(i)) continue;
     std::array<long, D> idx{};
     bool ok = true;
@@ -252,6 +254,7 @@ void WallPressure<D>::locate(const FlowState<D>& s) {
     terms_[term->second].id = P.id[i];
     ++found;
   }
+  found = std::size_t(Communicator::world().sum(long(found)));
   if (found != terms_.size())
     throw InputError(cat("wallPressure '", this->name(), "': ", terms_.size() - found, " of the ", terms_.size(),
                          " wall particles behind the sensor on face ", faceName(), " of wall '", wall_.name,
@@ -261,12 +264,17 @@ void WallPressure<D>::locate(const FlowState<D>& s) {
 template <int D>
 double WallPressure<D>::pressure(const FlowState<D>& s) {
   const auto& P = s.particles;
-  bool current = true;
-  for (const auto& t : terms_) current = current && t.id >= 0 && t.index < P.size() && P.id[t.index] == t.id;
-  if (!current) locate(s);  // first call, or the particles were reordered
+  const auto& world = Communicator::world();
+  bool current = located_;
+  for (const auto& t : terms_)
+    current = current && (t.id < 0 ? world.isParallel() : t.index < s.numOwned() && P.id[t.index] == t.id);
+  // First call, or the particles were reordered (or, on several ranks, moved to another rank).
+  if (world.any(!current)) locate(s);
+  located_ = true;
   double p = 0;
-  for (const auto& t : terms_) p += t.weight * P.pressure[t.index];
-  return p;
+  for (const auto& t : terms_)
+    if (t.id >= 0) p += t.weight * P.pressure[t.index];
+  return world.sum(p);
 }
 
 template <int D>

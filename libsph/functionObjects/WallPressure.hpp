@@ -78,6 +78,7 @@ class WallPressure : public SampledFunctionObject<D> {
   double size_ = 0, area_ = 0;
   bool disc_ = false;
   std::vector<Term> terms_;
+  bool located_ = false;                              // the terms were looked up once
   std::map<std::array<long, D>, std::size_t> termOf_;  // lattice indices (x, y[, z]) -> term
   std::vector<std::vector<double>> axisNodes_;        // per axis: the wall lattice coordinates
   std::optional<LowPassFilter> filter_;

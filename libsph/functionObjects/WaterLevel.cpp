@@ -1,6 +1,7 @@
 // Function object `waterLevel`: wave-gauge heights from the fluid's kernel sum; see
 // WaterLevel.hpp. Reads points, minKernelSum through the declarations below.
 #include "functionObjects/WaterLevel.hpp"
+#include "parallel/Communicator.hpp"
 #include "core/Parameter.hpp"
 #include <algorithm>
 #include <cmath>
@@ -35,7 +36,7 @@ template <int D>
 double WaterLevel<D>::height(const FlowState<D>& s, const Vec<D>& foot) {
   const auto& p = s.particles;
   const double support = s.kernel.support(), V = s.V();
-  const long n = long(p.size());
+  const long n = long(s.numOwned());
   near_.clear();
   double top = -INFINITY;
   // The fluid particles whose support reaches the line (serial push, parallel test).
@@ -56,6 +57,17 @@ double WaterLevel<D>::height(const FlowState<D>& s, const Vec<D>& foot) {
     }
 #pragma omp critical(shizukuWaterLevelTop)
     top = std::max(top, localTop);
+  }
+  const auto& world = Communicator::world();
+  if (world.isParallel()) {  // every rank's particles near the line (sorted below: the order does not matter)
+    top = world.max(top);
+    std::vector<double> mine(near_.size() * D);
+    for (std::size_t k = 0; k < near_.size(); ++k)
+      for (int a = 0; a < D; ++a) mine[k * D + a] = near_[k][a];
+    const std::vector<double> all = world.allGatherVariable(mine);
+    near_.resize(all.size() / D);
+    for (std::size_t k = 0; k < near_.size(); ++k)
+      for (int a = 0; a < D; ++a) near_[k][a] = all[k * D + a];
   }
   if (near_.empty()) return 0;
   // Deterministic sums whatever the thread count: the offsets in a fixed order.

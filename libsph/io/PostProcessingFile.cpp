@@ -1,6 +1,7 @@
 // Function-object output file: see PostProcessingFile.hpp (docs/design.md 1.3).
 #include "io/PostProcessingFile.hpp"
 #include "io/FileOps.hpp"
+#include "parallel/Communicator.hpp"
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -13,6 +14,8 @@ PostProcessingFile::PostProcessingFile(const std::string& caseDir, const std::st
   if (name.empty() || startTimeName.empty() || fileName.empty())
     throw std::runtime_error("PostProcessingFile: empty name, start time or file name");
   path_ = caseDir + "/postProcessing/" + name + "/" + startTimeName + "/" + fileName;
+  // In a distributed run every rank computes the same rows; rank 0 writes them.
+  if (!Communicator::world().isRoot()) return;
   fileops::makeDirectories(fileops::parentOf(path_));
   errno = 0;
   file_ = std::fopen(path_.c_str(), "w");
@@ -38,6 +41,7 @@ PostProcessingFile& PostProcessingFile::operator=(PostProcessingFile&& o) noexce
 }
 
 void PostProcessingFile::put(const std::string& text) {
+  if (!Communicator::world().isRoot()) return;
   if (!file_) throw std::runtime_error("PostProcessingFile: '" + path_ + "' is not open");
   errno = 0;
   if (std::fwrite(text.data(), 1, text.size(), file_) != text.size() || std::fflush(file_) != 0)

@@ -7,6 +7,8 @@
 // files of earlier start times; a rerun from the same start time replaces its
 // own file. fileName may contain '/' (e.g. "histogram/0.1.dat").
 // Numbers: 12 significant digits ("%.12g"), nan as "nan"; vectors "(x y)".
+// In a distributed run only rank 0 opens and writes the file (every rank computes the
+// same rows: docs/parallel.md 5).
 // Dictionary keys read: none.
 #pragma once
 #include "core/types.hpp"

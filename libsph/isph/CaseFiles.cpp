@@ -16,6 +16,8 @@ CaseFiles CaseFiles::read(const std::string& caseDir) {
   c.particlesDict = Dictionary::fromFile(c.path("system/particlesDict"));
   c.physicalProperties = Dictionary::fromFile(c.path("constant/physicalProperties"));
   if (fs::exists(c.path("constant/g"))) c.gravity = Dictionary::fromFile(c.path("constant/g"));
+  if (fs::exists(c.path("system/decomposeParDict")))
+    c.decomposeParDict = Dictionary::fromFile(c.path("system/decomposeParDict"));
   return c;
 }
 
@@ -26,6 +28,7 @@ void CaseFiles::checkAllRead() const {
   particlesDict.checkAllRead();
   physicalProperties.checkAllRead();
   if (gravity) gravity->checkAllRead();
+  if (decomposeParDict) decomposeParDict->checkAllRead();
 }
 
 int caseDimension(const std::string& caseDir) {

@@ -1,6 +1,6 @@
 // The dictionaries of a case directory (docs/design.md 1.2), parsed once:
 // system/{controlDict, sphSchemes, sphSolution, particlesDict},
-// constant/physicalProperties and the optional constant/g.
+// constant/physicalProperties and the optional constant/g and system/decomposeParDict.
 #pragma once
 #include "core/Dictionary.hpp"
 #include <optional>
@@ -12,6 +12,7 @@ struct CaseFiles {
   std::string dir;
   Dictionary controlDict, sphSchemes, sphSolution, particlesDict, physicalProperties;
   std::optional<Dictionary> gravity;  // constant/g: absent = no body force is built
+  std::optional<Dictionary> decomposeParDict;  // system/decomposeParDict: distributed runs' settings
 
   static CaseFiles read(const std::string& caseDir);
   std::string path(const std::string& relative) const { return dir + "/" + relative; }

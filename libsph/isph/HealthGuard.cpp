@@ -5,6 +5,7 @@
 #include "io/TimeName.hpp"
 #include "io/VtpFile.hpp"
 #include "operators/DensityErrorMeasure.hpp"
+#include "parallel/Communicator.hpp"
 #include <cmath>
 #include <filesystem>
 
@@ -65,8 +66,27 @@ void HealthGuard<D>::setLimits(const FlowState<D>& s, const Vec<D>& g) {
 
 template <int D>
 double HealthGuard<D>::check(const FlowState<D>& s, const char* where, const std::string& caseDir) {
+  const auto& world = Communicator::world();
+  density_ = measureDensityError(s);  // collective: before any rank can fail
+  if (!world.isParallel()) return checkOwn(s, where, caseDir);
+  // A failure found on one rank stops every rank, with its message.
+  std::string failure;
+  double maxU = 0;
+  try {
+    maxU = checkOwn(s, where, caseDir);
+  } catch (const NumericalError& e) {
+    failure = e.what();
+  }
+  failure = world.firstMessage(failure);
+  if (!failure.empty()) throw NumericalError(failure);
+  return world.max(maxU);
+}
+
+// The checks on this rank's own particles.
+template <int D>
+double HealthGuard<D>::checkOwn(const FlowState<D>& s, const char* where, const std::string& caseDir) {
   const auto& P = s.particles;
-  const long n = long(s.size());
+  const long n = long(s.numOwned());
   // Offending particles: every non-finite one.
   offending_.clear();
   double maxU = 0;
@@ -90,9 +110,9 @@ double HealthGuard<D>::check(const FlowState<D>& s, const char* where, const std
                 P.position[fastest].transpose(), ", ", surfaceClassName(P.surfaceClass(fastest)),
                 "), above healthChecks/maxSpeed ", limits_.maxSpeed, " m/s"), caseDir);
   }
-  density_ = measureDensityError(s);
   const auto& e = density_.interior;
-  if (e.count > 0 && e.rms > limits_.maxDensityErrorRms) {
+  // (global statistics; the rank holding the worst interior particle of its own reports it)
+  if (e.count > 0 && e.rms > limits_.maxDensityErrorRms && density_.worstInterior >= 0) {
     const long worst = density_.worstInterior;
     offending_.push_back(Index(worst));
     fail(s, cat("interior density error rms ", e.rms, " % exceeds healthChecks/maxDensityErrorRms ",
@@ -150,8 +170,10 @@ std::string HealthGuard<D>::writeOffendingParticles(const FlowState<D>& s, const
     ts.note = "offending particles of a failed health check";
     const std::string dir = caseDir + "/postProcessing/healthChecks/" + timeName(s.time);
     fs::create_directories(dir);
-    writeVtp<D>(dir + "/offending.vtp", sub, ts);
-    return dir + "/offending.vtp";
+    const auto& world = Communicator::world();
+    const std::string file = dir + (world.isParallel() ? cat("/offending.rank", world.rank(), ".vtp") : "/offending.vtp");
+    writeVtp<D>(file, sub, ts);
+    return file;
   } catch (const std::exception& e) {
     Log::get().warning(cat("could not write the offending particles: ", e.what()));
     return "";
@@ -161,11 +183,14 @@ std::string HealthGuard<D>::writeOffendingParticles(const FlowState<D>& s, const
 template <int D>
 void HealthGuard<D>::saveGoodState(const FlowState<D>& s) {
   const auto& P = s.particles;
-  goodX_ = P.position;  // same size every step: no reallocation after the first
-  goodU_ = P.velocity;
-  goodP_ = P.pressure;
-  goodId_ = P.id;
-  goodType_ = P.type;
+  // This rank's own particles (a distributed run's ghosts are rebuilt from them); the
+  // capacity is kept, so no reallocation once the count has peaked.
+  const std::size_t n = s.numOwned();
+  goodX_.assign(P.position.begin(), P.position.begin() + n);
+  goodU_.assign(P.velocity.begin(), P.velocity.begin() + n);
+  goodP_.assign(P.pressure.begin(), P.pressure.begin() + n);
+  goodId_.assign(P.id.begin(), P.id.begin() + n);
+  goodType_.assign(P.type.begin(), P.type.begin() + n);
   goodBalance_ = s.balance;
   goodTime_ = s.time;
   goodStep_ = s.step;

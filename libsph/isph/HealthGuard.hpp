@@ -50,6 +50,7 @@ class HealthGuard {
   void restoreGoodState(FlowState<D>& s) const;
 
  private:
+  double checkOwn(const FlowState<D>& s, const char* where, const std::string& caseDir);
   std::string writeOffendingParticles(const FlowState<D>& s, const std::string& caseDir) const;
   [[noreturn]] void fail(const FlowState<D>& s, const std::string& message, const std::string& caseDir) const;
   HealthLimits limits_;

@@ -6,8 +6,9 @@
 namespace shizuku {
 
 template <int D>
-IsphStep<D>::IsphStep(FlowState<D>& s, NumericalScheme<D> scheme, EffectSet<D> effects, StageTimers& timers)
-    : s_(s), scheme_(std::move(scheme)), effects_(std::move(effects)), timers_(timers) {
+IsphStep<D>::IsphStep(FlowState<D>& s, NumericalScheme<D> scheme, EffectSet<D> effects, StageTimers& timers,
+                      DomainDecomposition<D>* decomposition)
+    : s_(s), scheme_(std::move(scheme)), effects_(std::move(effects)), decomposition_(decomposition), timers_(timers) {
   needs_ = effects_.needs();
   // The free-surface pressure condition (eq. 6b) reads the fit's normal and distance.
   needs_.surfaceFit |= scheme_.ppe->zeroPressureOnSurface() && scheme_.freeSurface->parameters().enabled;
@@ -22,6 +23,7 @@ IsphStep<D>::IsphStep(FlowState<D>& s, NumericalScheme<D> scheme, EffectSet<D> e
   source_.resize(s_.size());
   // Timed stages in execution order (the timing columns follow it); optional stages
   // exist only when an active effect runs them.
+  st_.decomposition = decomposition_ ? timers_.stage("decomposition") : -1;
   st_.neighbours = timers_.stage("neighbours");
   st_.weights = timers_.stage("weights");
   st_.density = timers_.stage("density");
@@ -37,9 +39,27 @@ IsphStep<D>::IsphStep(FlowState<D>& s, NumericalScheme<D> scheme, EffectSet<D> e
   if (effects_.shifting) effects_.shifting->registerTimers(timers_);
 }
 
+// Particles to their owners, and the halo (a distributed run).
+template <int D>
+void IsphStep<D>::distribute() {
+  if (!decomposition_) return;
+  StageTimers::Scope t(timers_, st_.decomposition);
+  decomposition_->distribute(s_.particles);
+  s_.halo = &decomposition_->halo();
+  particleCountChanged();
+}
+
+template <int D>
+void IsphStep<D>::dropGhosts() {
+  if (!decomposition_) return;
+  decomposition_->stripGhosts(s_.particles);
+  particleCountChanged();
+}
+
 template <int D>
 void IsphStep<D>::analyse() {
   auto& P = s_.particles;
+  distribute();
   { StageTimers::Scope t(timers_, st_.neighbours); search_->build(P.position, s_.neighbours); }
   {
     StageTimers::Scope t(timers_, st_.density);
@@ -82,6 +102,7 @@ void IsphStep<D>::predict() {
   const double dt = s_.dt;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) s_.uStar[i] = s_.isFluid(i) ? Vec<D>(u[i] + dt * acc[i]) : u[i];
+  s_.exchange(s_.uStar);  // the walls' Shepard sum reads the fluid neighbours' u*
   shepardFluidVelocity(s_, s_.uStar);
 }
 
@@ -117,6 +138,7 @@ void IsphStep<D>::correct() {
   Ops<D>::addGradient(s_.neighbours, s_.weights, -(s_.dt / s_.rho0 * s_.V()), P.pressure, P.velocity, s_.isFluidMask);
   // Outlet particles carry the fluid's velocity on (zero normal gradient, docs/boundaries.md).
   if (s_.hasOpenBoundaries) shepardFluidVelocity(s_, P.velocity, true);
+  else s_.exchange(P.velocity);
 }
 
 template <int D>
@@ -140,6 +162,7 @@ void IsphStep<D>::advect() {
     P.position[i] += dt * (extra ? Vec<D>(P.velocity[i] + du_[i]) : P.velocity[i]);
     if (s_.periodic.any()) s_.periodic.wrap(P.position[i]);
   }
+  s_.exchange(P.position);
 }
 
 template <int D>
@@ -154,6 +177,7 @@ void IsphStep<D>::correctPositions() {
   if (s_.periodic.any())
     for (std::size_t i = 0; i < s_.size(); ++i)
       if (s_.isFluid(i)) s_.periodic.wrap(s_.particles.position[i]);
+  s_.exchange(s_.particles.position);
 }
 
 template <int D>
@@ -170,6 +194,7 @@ void IsphStep<D>::advance(double dt) {
   advect();
   correctPositions();
   shift();
+  dropGhosts();
   s_.time += dt;
   ++s_.step;
 }
@@ -177,6 +202,7 @@ void IsphStep<D>::advance(double dt) {
 template <int D>
 void IsphStep<D>::reorderParticles() {
   auto& P = s_.particles;
+  dropGhosts();
   const std::vector<Index> perm = search_->cellOrder(P.position);
   auto apply = [&](auto& v) {
     if (v.empty()) return;

@@ -8,10 +8,14 @@
 //   9    correctPositions(): position corrections after advection (ADS)
 //   10   shift():          particle shifting, capped, Taylor-corrected u (eq. 10)
 // The step owns the numerical scheme (derivative operator, neighbour search, free-surface
-// detector, pressure equation), the effects and its scratch arrays (sized once).
+// detector, pressure equation), the effects and its scratch arrays (sized once). In a
+// distributed run (docs/parallel.md 5) the analysis starts by moving particles to their
+// owners and building the halo; the stages refresh the ghosts' fields where a later pass
+// reads them at neighbours; the step ends by dropping the ghosts.
 // Reads no dictionary keys (CaseSetup builds its parts).
 #pragma once
 #include "core/StageTimers.hpp"
+#include "decomposition/DomainDecomposition.hpp"
 #include "effects/EffectSet.hpp"
 #include "pressure/PressureEquation.hpp"
 #include "surface/FreeSurface.hpp"
@@ -44,7 +48,9 @@ template <int D>
 class IsphStep {
  public:
   // Registers the step's timed stages in `timers`, in execution order.
-  IsphStep(FlowState<D>& s, NumericalScheme<D> scheme, EffectSet<D> effects, StageTimers& timers);
+  // `decomposition`: a distributed run's (nullptr in serial), kept by the caller.
+  IsphStep(FlowState<D>& s, NumericalScheme<D> scheme, EffectSet<D> effects, StageTimers& timers,
+           DomainDecomposition<D>* decomposition = nullptr);
 
   // Steps 1-4 at the current positions.
   void analyse();
@@ -55,6 +61,11 @@ class IsphStep {
   // Resizes the per-particle arrays after particles were removed (or restored); no
   // allocation when the count shrank. The analysis must follow.
   void particleCountChanged();
+  // The particles were replaced by this rank's own ones alone (the last good state).
+  void particlesRestored() {
+    if (decomposition_) decomposition_->ghostsDropped();
+    particleCountChanged();
+  }
 
   const EffectSet<D>& effects() const { return effects_; }
   const NumericalScheme<D>& scheme() const { return scheme_; }
@@ -83,14 +94,17 @@ class IsphStep {
   void advect();
   void correctPositions();
   void shift();
+  void distribute();
+  void dropGhosts();
 
   FlowState<D>& s_;
   NumericalScheme<D> scheme_;
   EffectSet<D> effects_;
   EffectNeeds needs_;
   std::unique_ptr<NeighbourSearch<D>> search_;
+  DomainDecomposition<D>* decomposition_;
   StageTimers& timers_;
-  struct StageIds { int neighbours, density, freeSurface, surfaceFit, weights, predictor, ppeAssembly, ppeSolve,
+  struct StageIds { int decomposition, neighbours, density, freeSurface, surfaceFit, weights, predictor, ppeAssembly, ppeSolve,
                     corrector, advection, positionCorrections; } st_{};
   std::vector<int> advectionTimer_;  // per advection-velocity effect
   StepReport report_;

@@ -2,6 +2,7 @@
 #include "isph/Simulation.hpp"
 #include "isph/CaseSetup.hpp"
 #include "isph/TimeLoop.hpp"
+#include "parallel/Communicator.hpp"
 #include "io/TimeDirectory.hpp"
 #include "io/TimeName.hpp"
 #include <algorithm>
@@ -31,7 +32,10 @@ Simulation<D>::Simulation(const std::string& caseDir, const SimulationOptions& o
   outflow_ = std::make_unique<Outflow<D>>(std::move(domain), walls, std::move(open));
   EffectSet<D> effects = EffectSet<D>::build(files_.gravity ? &*files_.gravity : nullptr, files_.physicalProperties,
                                              physics.nu, files_.sphSchemes, s_);
-  step_ = std::make_unique<IsphStep<D>>(s_, std::move(scheme), std::move(effects), timers_);
+  const DecompositionSettings decomposition =
+      DecompositionSettings::read(files_.decomposeParDict ? &*files_.decomposeParDict : nullptr);
+  if (Communicator::world().isParallel()) distribute(decomposition);
+  step_ = std::make_unique<IsphStep<D>>(s_, std::move(scheme), std::move(effects), timers_, decomposition_.get());
   if (opt_.functionObjects && !opt_.postProcessing)
     functionObjects_ = createFunctionObjects<D>(files_.controlDict.subDictPtr("functions"), walls);
   else if (const Dictionary* f = files_.controlDict.subDictPtr("functions"))
@@ -42,11 +46,39 @@ Simulation<D>::Simulation(const std::string& caseDir, const SimulationOptions& o
 template <int D>
 Simulation<D>::~Simulation() = default;
 
+// Every rank has read or generated the whole set: each keeps its own particles and the
+// halo (docs/parallel.md 3).
+template <int D>
+void Simulation<D>::distribute(const DecompositionSettings& settings) {
+  if (s_.hasOpenBoundaries)
+    throw InputError(cat(files_.dir, ": inlets and outlets do not run on several ranks yet (docs/parallel.md, "
+                         "\"Status\"): run this case on one rank"));
+  decomposition_ = std::make_unique<DomainDecomposition<D>>(settings, s_.kernel.support(), s_.periodic);
+  decomposition_->start(s_.particles);
+  s_.halo = &decomposition_->halo();
+  // Each rank counts the fluid it removes from here on; rank 0 carries what was read.
+  const auto& world = Communicator::world();
+  if (!world.isRoot()) s_.balance = FluidBalance{};
+  long fluid = 0;
+  for (std::size_t i = 0; i < s_.numOwned(); ++i) fluid += s_.particles.isFluid(i);
+  const std::vector<long> owned = world.allGather(long(s_.numOwned())), fluids = world.allGather(fluid);
+  const std::vector<long> ghosts = world.allGather(long(decomposition_->halo().numGhosts()));
+  std::string perRank;
+  for (int r = 0; r < world.size(); ++r)
+    perRank += cat(r ? ", " : "", owned[std::size_t(r)], " (", fluids[std::size_t(r)], " fluid, ",
+                   ghosts[std::size_t(r)], " ghosts)");
+  info(cat("Decomposition: ", settings.method, " (Zoltan) on ", world.size(), " ranks, halo 2h = ",
+           s_.kernel.support(), " m; particles per rank: ", perRank));
+  s_.refreshTypeMasks();
+}
+
 template <int D>
 std::string Simulation<D>::pipeline() const {
   std::ostringstream os;
   const auto& T = s_.particles.type;
-  const auto count = [&](ParticleType t) { return std::count(T.begin(), T.end(), std::uint8_t(t)); };
+  const auto count = [&](ParticleType t) {  // every rank's own particles
+    return Communicator::world().sum(long(std::count(T.begin(), T.begin() + long(s_.numOwned()), std::uint8_t(t))));
+  };
   os << "Pipeline (" << D << "D, " << count(ParticleType::fluid) << " fluid + " << count(ParticleType::wall)
      << " wall particles"
      << (s_.hasOpenBoundaries ? cat(" + ", count(ParticleType::inlet), " inlet + ", count(ParticleType::outlet), " outlet")

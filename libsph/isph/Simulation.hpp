@@ -59,13 +59,17 @@ class Simulation {
   // Statistics of the last step, for the progress line and tests.
   const StepReport& lastStep() const { return step_->report(); }
   const Outflow<D>& outflow() const { return *outflow_; }
+  // A distributed run's decomposition (nullptr in serial).
+  const DomainDecomposition<D>* decomposition() const { return decomposition_.get(); }
 
  private:
+  void distribute(const DecompositionSettings& settings);
   CaseFiles files_;
   SimulationOptions opt_;
   RunControl rc_;
   FlowState<D> s_;
   StageTimers timers_;
+  std::unique_ptr<DomainDecomposition<D>> decomposition_;  // a distributed run's
   std::unique_ptr<IsphStep<D>> step_;
   std::unique_ptr<HealthGuard<D>> guard_;
   std::unique_ptr<Outflow<D>> outflow_;

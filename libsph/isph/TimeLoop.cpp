@@ -6,9 +6,13 @@
 #include "isph/RunLog.hpp"
 #include "isph/StopRequests.hpp"
 #include "isph/TimeStepFloor.hpp"
+#include "decomposition/ParticleGather.hpp"
+#include "parallel/Communicator.hpp"
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <filesystem>
+#include <iostream>
 
 namespace shizuku {
 
@@ -41,7 +45,11 @@ double TimeLoop<D>::chooseDeltaT(double previous, double nextWrite) {
     double umax = 0;
     for (std::size_t i = 0; i < s_.size(); ++i)
       if (s_.isFluid(i)) umax = std::max(umax, s_.particles.velocity[i].norm());
-    const TimeStepLimit effects = step_.effects().timeStepLimit(s_);
+    // Every rank takes the same step: the limits over all ranks' particles.
+    const auto& world = Communicator::world();
+    umax = world.max(umax);
+    TimeStepLimit effects = step_.effects().timeStepLimit(s_);
+    effects.dt = world.min(effects.dt);
     const TimeStepLimit lim[] = {
         {umax > 0 ? rc_.maxCo * s_.h / umax : INFINITY, "CFL"},
         effects,
@@ -66,6 +74,39 @@ double TimeLoop<D>::chooseDeltaT(double previous, double nextWrite) {
   return dt;
 }
 
+// The fluid removed, released and captured on every rank (each counts its own).
+static FluidBalance globalBalance(const FluidBalance& mine) {
+  const auto& world = Communicator::world();
+  FluidBalance b;
+  b.removedMass = world.sum(mine.removedMass);
+  b.removedCount = world.sum(mine.removedCount);
+  b.released = world.sum(mine.released);
+  b.captured = world.sum(mine.captured);
+  return b;
+}
+
+// Report an error met by this rank (rank 0's log is the only one shown, so the rank is
+// named) and stop every rank with exit status 1.
+[[noreturn]] static void stopAllRanks(std::exception_ptr error) {
+  const auto& world = Communicator::world();
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::exception& e) {
+    std::cerr << "Error: rank " << world.rank() << ": " << e.what() << std::endl;
+  } catch (...) {
+    std::cerr << "Error: rank " << world.rank() << ": unknown error" << std::endl;
+  }
+  world.abort(1);
+}
+
+// Fluid particles of every rank (this rank's own, summed).
+template <int D>
+double TimeLoop<D>::fluidCount() const {
+  long n = 0;
+  for (std::size_t i = 0; i < s_.numOwned(); ++i) n += s_.particles.isFluid(i);
+  return double(Communicator::world().sum(n));
+}
+
 template <int D>
 void TimeLoop<D>::writeTime(const std::string& reason) {
   StageTimers::Scope t(timers_, outputTimer_);
@@ -77,7 +118,24 @@ void TimeLoop<D>::writeTime(const std::string& reason) {
   ts.note = reason;
   ts.balance = s_.balance;
   const std::string name = timeName(s_.time);
-  writeTimeDirectory<D>(files_.dir, name, s_.particles, ts, rc_.ascii);
+  const auto& world = Communicator::world();
+  if (world.isParallel()) {
+    // Rank 0 writes every rank's particles in the serial format; a failure stops all ranks.
+    const ParticleSet<D> whole = gatherParticles(s_.particles, s_.numOwned());
+    ts.balance = globalBalance(s_.balance);
+    std::string failure;
+    if (world.isRoot()) {
+      try {
+        writeTimeDirectory<D>(files_.dir, name, whole, ts, rc_.ascii);
+      } catch (const std::exception& e) {
+        failure = e.what();
+      }
+    }
+    failure = world.firstMessage(failure);
+    if (!failure.empty()) throw std::runtime_error(failure);
+  } else {
+    writeTimeDirectory<D>(files_.dir, name, s_.particles, ts, rc_.ascii);
+  }
   written_.push_back(name);
   writtenAtCurrentTime_ = true;
 }
@@ -132,13 +190,14 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
   particleSteps += fluidCount_;
   if (outflow_.afterStep(s_, guard_.goodPositions(), guard_)) {
     step_.particleCountChanged();
-    fluidCount_ = double(s_.particles.countFluid());
+    fluidCount_ = fluidCount();
   }
   step_.analyse();
   step_.report().maxSpeed = guard_.check(s_, "after the step", files_.dir);
   const bool scheduled = rc_.isWriteStep(s_.time, s_.step);
   const bool writeNow = scheduled || atEnd();
-  const bool stopNow = stopDue(watch);
+  // Every rank stops at the same step: a signal or `stopAt writeNow` seen by any rank.
+  const bool stopNow = Communicator::world().any(stopDue(watch));
   if (writeNow || stopNow) writeTime(stopNow ? "stop requested" : "write interval");
   // A restart from a scheduled write then rebuilds what the uninterrupted run rebuilds.
   if (scheduled) step_.startAfreshAtNextStep();
@@ -191,7 +250,7 @@ template <int D>
 void TimeLoop<D>::writeLastGoodState(const NumericalError& e) {
   Log::get().error(cat("numerical failure: ", e.what()));
   guard_.restoreGoodState(s_);
-  step_.particleCountChanged();
+  step_.particlesRestored();
   info(cat("Writing the last good state (time ", s_.time, ", step ", s_.step, ")"));
   try {
     step_.analyse();
@@ -204,8 +263,9 @@ void TimeLoop<D>::writeLastGoodState(const NumericalError& e) {
 template <int D>
 int TimeLoop<D>::run(const std::string& pipeline) {
   installStopSignalHandlers();
-  for (const auto& left : removeStaleTemporaries(files_.dir))
-    info("removed the leftover of an interrupted write: " + left);
+  if (Communicator::world().isRoot())
+    for (const auto& left : removeStaleTemporaries(files_.dir))
+      info("removed the leftover of an interrupted write: " + left);
   const double wallStart = clockSeconds();
   info(pipeline);
   for (const auto& d : Dictionary::defaultsUsed()) info("default: " + d);
@@ -213,7 +273,7 @@ int TimeLoop<D>::run(const std::string& pipeline) {
   double previousDt = s_.dt, particleSteps = 0;
   const long firstStep = s_.step;
   startTime_ = s_.time;
-  fluidCount_ = double(s_.particles.countFluid());
+  fluidCount_ = fluidCount();
   span_ = std::max(rc_.endTime - s_.time, 1e-300);
   int exitCode = 0;
   ControlDictWatch watch(files_.path("system/controlDict"));
@@ -227,6 +287,9 @@ int TimeLoop<D>::run(const std::string& pipeline) {
     // A write error (full disk, unwritable case): close the function-object files,
     // then let the caller report it (exit 1); nothing written before is touched.
     for (auto& f : functionObjects_) f->end();
+    // On several ranks the error may be this rank's alone (its file): it says so and
+    // stops every rank, which would otherwise wait for it.
+    if (Communicator::world().isParallel()) stopAllRanks(std::current_exception());
     throw;
   }
   for (auto& f : functionObjects_) f->end();

@@ -31,6 +31,7 @@ class TimeLoop {
   // maxDeltaT and 1.2 x the previous step, shortened to land on write and end times.
   // Each step's dt must pass the floor (TimeStepFloor.hpp: minDeltaT, t + dt > t).
   double chooseDeltaT(double previous, double nextWrite);
+  double fluidCount() const;
 
  private:
   void start();

@@ -1,15 +1,19 @@
 // The linear-solver factory: reads the `pressure` sub-dictionary of
 // system/sphSolution (docs/design.md part 2, docs/method.md 4.2) and builds a backend:
-// solver BiCGSTAB|UMFPACK|KLU|SparseLU; BiCGSTAB: tolerance, maxIterations,
+// solver BiCGSTAB|UMFPACK|KLU|SparseLU|PETSc; BiCGSTAB and PETSc: tolerance, maxIterations,
 // preconditioner AMG|ILU0|ILUT|diagonal|hypreAMG with amgReuse (AMG, hypreAMG),
 // blocks (ILU0), dropTolerance and fillFactor (ILUT); reuseSymbolic (KLU, UMFPACK).
 // Defaults and ranges are declared once below; the default was chosen by
-// measurement (docs/performance.md).
+// measurement (docs/performance.md). On several ranks a solver that needs the whole
+// matrix is replaced by PETSc with the same tolerance, iteration limit and preconditioner
+// family (docs/parallel.md 6), so a case runs unchanged in serial and in parallel.
 #include "linearSolvers/LinearSolver.hpp"
+#include "core/Log.hpp"
 #include "core/Parameter.hpp"
 #include "linearSolvers/AggregationAMG.hpp"
 #include "linearSolvers/Krylov.hpp"
 #include "linearSolvers/SolverBackends.hpp"
+#include "parallel/Communicator.hpp"
 
 namespace shizuku {
 
@@ -17,7 +21,7 @@ double relativeResidual(const SparseMatrixR& A, const Eigen::VectorXd& b, const 
   return relativeResidual(A, b.data(), x.data());
 }
 
-std::vector<std::string> LinearSolver::names() { return {"BiCGSTAB", "UMFPACK", "KLU", "SparseLU"}; }
+std::vector<std::string> LinearSolver::names() { return {"BiCGSTAB", "UMFPACK", "KLU", "SparseLU", "PETSc"}; }
 
 std::vector<std::string> LinearSolver::preconditionerNames() { return {"AMG", "ILU0", "ILUT", "diagonal", "hypreAMG"}; }
 
@@ -40,7 +44,10 @@ namespace key {
 
 const ParameterGroup pressure("system/sphSolution: pressure", "Pressure Poisson equation solver (docs/method.md 4.2).");
 const OptionParameter solver = pressure.option("solver", LinearSolver::names(),
-    "BiCGSTAB (warm-started, falls back to LU) or a direct LU").def("BiCGSTAB");
+    "BiCGSTAB (warm-started, falls back to LU), a direct LU, or PETSc (across ranks; chosen on several ranks)")
+    .def("BiCGSTAB");
+const OptionParameter krylov = pressure.option("krylov", {"BiCGSTAB", "GMRES"}, "PETSc: the Krylov method")
+    .def("BiCGSTAB");
 const ScalarParameter tolerance = pressure.scalar("tolerance", dim::none,
     "BiCGSTAB: relative residual to reach").def(1e-8).above(0).below(1);
 const IntParameter maxIterations = pressure.integer("maxIterations", "BiCGSTAB: iteration limit").def(2000).min(1);
@@ -59,8 +66,31 @@ const SwitchParameter reuseSymbolic = pressure.onOff("reuseSymbolic",
 }  // namespace key
 }  // namespace
 
+namespace {
+
+// PETSc with the case's settings; `note` says why it replaced the case's solver.
+std::unique_ptr<LinearSolver> createPetsc(const Dictionary* d, const std::string& type) {
+  if (!petscAvailable())
+    d->error("solver", "PETSc needs a build with MPI (configure without -DSHIZUKU_MPI=OFF)");
+  PetscSettings s;
+  s.krylov = key::krylov.read(d);
+  s.tolerance = key::tolerance.read(d);
+  s.maxIterations = key::maxIterations.read(d);
+  const std::string pc = key::preconditioner.read(d);
+  if (pc == "ILUT") d->error("preconditioner", "ILUT is not available with PETSc: use AMG, diagonal or ILU0");
+  s.preconditioner = pc == "AMG" ? "hypreAMG" : pc;
+  if (type != "PETSc") s.note = cat("; the case's ", type, " needs the whole matrix on one rank");
+  if (d)
+    for (const char* k : {"blocks", "dropTolerance", "fillFactor", "amgReuse", "reuseSymbolic"}) d->markRead(k);
+  return makePetscSolver(s);
+}
+
+}  // namespace
+
 std::unique_ptr<LinearSolver> LinearSolver::createBuiltin(const Dictionary* d) {
   const std::string type = key::solver.read(d);
+  if (type == "PETSc" || Communicator::world().isParallel()) return createPetsc(d, type);
+  if (d) d->markRead("krylov");
   const bool iterative = type == "BiCGSTAB";
   if (d) {
     // Settings of the other family do not apply: accepted and ignored.

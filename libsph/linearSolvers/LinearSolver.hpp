@@ -1,7 +1,7 @@
 // The pressure solver's interface: LinearSolver (solve A x = b) and its factory
 // LinearSolver::create, which reads the `pressure` sub-dictionary of system/sphSolution
 // (docs/design.md part 2, docs/method.md 4.2):
-//   pressure { solver BiCGSTAB|UMFPACK|KLU|SparseLU; tolerance 1e-8; maxIterations 2000;
+//   pressure { solver BiCGSTAB|UMFPACK|KLU|SparseLU|PETSc; krylov BiCGSTAB|GMRES (PETSc); tolerance 1e-8; maxIterations 2000;
 //              preconditioner AMG|ILU0|ILUT|diagonal|hypreAMG; amgReuse 10; blocks 0;
 //              dropTolerance 1e-4; fillFactor 10; reuseSymbolic yes; }
 // This library (libsph/linearSolvers) owns that interface and every backend behind
@@ -45,6 +45,10 @@ class LinearSolver {
   virtual std::string describe() const = 0;
   // Solve A x = b; x holds the initial guess on entry (iterative solvers).
   virtual LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
+  // A solver across ranks: A holds this rank's rows (rows numbered rank by rank) with
+  // global column numbers, b and x this rank's entries (PETSc). The others need the
+  // whole matrix on one rank.
+  virtual bool distributed() const { return false; }
   // State kept from earlier matrices (a lagged AMG hierarchy) cannot be rebuilt by a
   // restart. nextSolveStartsAfresh(): the next solve uses none of it, so a run stopped
   // before it restarts bit for bit; startAfreshAtNextSolve(): make the next solve

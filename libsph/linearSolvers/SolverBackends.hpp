@@ -27,6 +27,17 @@ std::unique_ptr<Preconditioner> makeILUT(double dropTolerance, int fillFactor);
 
 // hypre BoomerAMG (HypreAMG.cpp): available when built with libhypre-dev.
 bool hypreAvailable();
+
+// PETSc across ranks (PetscSolver.cpp).
+struct PetscSettings {
+  std::string krylov = "BiCGSTAB";        // or GMRES
+  std::string preconditioner = "hypreAMG";  // hypreAMG (AMG), diagonal, ILU0
+  double tolerance = 1e-8;
+  int maxIterations = 2000;
+  std::string note;                        // appended to describe()
+};
+bool petscAvailable();
+std::unique_ptr<LinearSolver> makePetscSolver(const PetscSettings& s);
 std::unique_ptr<Preconditioner> makeHypreAMG(int reuse);
 
 }  // namespace shizuku

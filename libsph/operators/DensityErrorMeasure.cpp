@@ -1,6 +1,7 @@
 // Statistics of the density error of eq. (22): see DensityErrorMeasure.hpp.
 #include "operators/DensityErrorMeasure.hpp"
 #include "core/BlockReduce.hpp"
+#include "parallel/Communicator.hpp"
 #include <cmath>
 #include <limits>
 
@@ -34,7 +35,7 @@ template <int D>
 DensityErrorSummary measureDensityError(const FlowState<D>& s) {
   const auto& p = s.particles;
   thread_local std::vector<Moments> partial;
-  const Moments m = blockReduce(p.size(), partial, [&](Moments& a, std::size_t i) {
+  Moments m = blockReduce(s.numOwned(), partial, [&](Moments& a, std::size_t i) {
     if (!p.isFluid(i)) return;
     const double e = densityErrorPercent(s.rho0, p.density[i]);
     a.nAll += 1; a.sumAll += e; a.sum2All += e * e; a.maxAll = std::max(a.maxAll, std::abs(e));
@@ -43,6 +44,14 @@ DensityErrorSummary measureDensityError(const FlowState<D>& s) {
       if (std::abs(e) > a.maxIn || a.worst < 0) { a.maxIn = std::max(a.maxIn, std::abs(e)); a.worst = long(i); }
     }
   });
+  const auto& world = Communicator::world();
+  if (world.isParallel()) {
+    std::vector<double> sums = {m.nIn, m.sumIn, m.sum2In, m.nAll, m.sumAll, m.sum2All};
+    world.sumInPlace(sums);
+    m.nIn = sums[0]; m.sumIn = sums[1]; m.sum2In = sums[2]; m.nAll = sums[3]; m.sumAll = sums[4]; m.sum2All = sums[5];
+    m.maxIn = world.max(m.maxIn);
+    m.maxAll = world.max(m.maxAll);
+  }
   DensityErrorSummary r;
   r.interior = finish(m.nIn, m.sumIn, m.sum2In, m.maxIn);
   r.all = finish(m.nAll, m.sumAll, m.sum2All, m.maxAll);

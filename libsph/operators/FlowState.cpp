@@ -42,6 +42,7 @@ void FlowState<D>::computeDensity() {
     for (Index k = nl.begin(i); k < nl.end(i); ++k) s += weights.w[k];
     rho[i] = m * s;
   }
+  exchange(rho);
 }
 
 template struct FlowState<2>;

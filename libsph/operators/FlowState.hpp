@@ -5,6 +5,7 @@
 #pragma once
 #include "core/FluidBalance.hpp"
 #include "core/types.hpp"
+#include "decomposition/Halo.hpp"
 #include "kernels/Kernel.hpp"
 #include "operators/Ops.hpp"
 #include "particles/NeighbourList.hpp"
@@ -47,7 +48,15 @@ struct FlowState {
   std::vector<double> fitDistance;       // signed distance s_i / d0 (positive outside), NaN where not fitted
   std::vector<double> curvature;         // kappa_i * d0 (eq. 20), NaN where not computed
 
+  // A distributed run's halo (nullptr in a serial run): the particles past numOwned() are
+  // ghosts, copies of other ranks' particles (docs/parallel.md 4).
+  const Halo<D>* halo = nullptr;
+
   double V() const { return particles.volume(); }
+  std::size_t numOwned() const { return halo ? halo->numOwned() : particles.size(); }
+  // Refresh the ghosts' values of a per-particle field from their owners: called after a
+  // pass computes a field that a later pass reads at neighbours (docs/parallel.md 5).
+  template <class T> void exchange(std::vector<T>& field) const { if (halo) halo->update(field); }
   std::size_t size() const { return particles.size(); }
   bool isFluid(std::size_t i) const { return isFluidMask[i] != 0; }
   // isFluidMask (and isBufferMask with open boundaries) from the particle types, sized to

@@ -113,6 +113,39 @@ std::vector<long> Communicator::allGather(long mine) const {
   return all;
 }
 
+// Every rank's length, and where each rank's piece starts in the concatenation; returns the total.
+long Communicator::pieces(long mine, std::vector<int>& counts, std::vector<int>& starts) const {
+  const std::vector<long> lengths = allGather(mine);
+  counts.assign(static_cast<std::size_t>(size_), 0);
+  starts.assign(static_cast<std::size_t>(size_), 0);
+  long total = 0;
+  for (int r = 0; r < size_; ++r) {
+    counts[std::size_t(r)] = int(lengths[std::size_t(r)]);
+    starts[std::size_t(r)] = int(total);
+    total += lengths[std::size_t(r)];
+  }
+  return total;
+}
+
+std::vector<double> Communicator::allGatherVariable(const std::vector<double>& mine) const {
+  if (!started_) return mine;
+  std::vector<int> counts, starts;
+  std::vector<double> all(static_cast<std::size_t>(pieces(long(mine.size()), counts, starts)));
+  MPI_Allgatherv(mine.data(), int(mine.size()), MPI_DOUBLE, all.data(), counts.data(), starts.data(), MPI_DOUBLE,
+                 MPI_COMM_WORLD);
+  return all;
+}
+
+std::vector<char> Communicator::gatherToRoot(const std::vector<char>& mine) const {
+  if (!started_) return mine;
+  std::vector<int> counts, starts;
+  const long total = pieces(long(mine.size()), counts, starts);
+  std::vector<char> all(rank_ == 0 ? std::size_t(total) : 0);
+  MPI_Gatherv(mine.data(), int(mine.size()), MPI_BYTE, all.data(), counts.data(), starts.data(), MPI_BYTE, 0,
+              MPI_COMM_WORLD);
+  return all;
+}
+
 std::vector<long> Communicator::exchangeCounts(const std::vector<long>& sendCounts) const {
   if (!started_) return sendCounts;
   std::vector<long> recv(static_cast<std::size_t>(size_));
@@ -144,6 +177,18 @@ void Communicator::barrier() const {
   if (started_) MPI_Barrier(MPI_COMM_WORLD);
 }
 
+std::string Communicator::firstMessage(const std::string& mine) const {
+  if (!started_) return mine;
+  const std::vector<long> lengths = allGather(long(mine.size()));
+  int from = -1;
+  for (int r = 0; r < size_ && from < 0; ++r)
+    if (lengths[std::size_t(r)] > 0) from = r;
+  if (from < 0) return "";
+  std::string text = rank_ == from ? mine : std::string(std::size_t(lengths[std::size_t(from)]), ' ');
+  MPI_Bcast(text.data(), int(text.size()), MPI_CHAR, from, MPI_COMM_WORLD);
+  return text;
+}
+
 void Communicator::abort(int status) const {
   if (started_) MPI_Abort(MPI_COMM_WORLD, status);
   std::exit(status);
@@ -165,9 +210,12 @@ long Communicator::exclusivePrefixSum(long) const { return 0; }
 std::vector<double> Communicator::allGather(const std::vector<double>& mine) const { return mine; }
 std::vector<long> Communicator::allGather(long mine) const { return {mine}; }
 std::vector<long> Communicator::exchangeCounts(const std::vector<long>& c) const { return c; }
+std::vector<char> Communicator::gatherToRoot(const std::vector<char>& mine) const { return mine; }
+std::vector<double> Communicator::allGatherVariable(const std::vector<double>& mine) const { return mine; }
 void Communicator::exchange(const std::vector<int>&, const std::vector<const char*>&, const std::vector<long>&,
                             const std::vector<char*>&, const std::vector<long>&, int) const {}
 void Communicator::barrier() const {}
+std::string Communicator::firstMessage(const std::string& mine) const { return mine; }
 void Communicator::abort(int status) const { std::exit(status); }
 
 #endif

@@ -39,6 +39,10 @@ class Communicator {
   // Every rank's `mine` (equal lengths), concatenated in rank order.
   std::vector<double> allGather(const std::vector<double>& mine) const;
   std::vector<long> allGather(long mine) const;
+  // Every rank's `mine` (any lengths), concatenated in rank order.
+  std::vector<double> allGatherVariable(const std::vector<double>& mine) const;
+  // Every rank's bytes, concatenated in rank order on rank 0 (empty elsewhere).
+  std::vector<char> gatherToRoot(const std::vector<char>& mine) const;
   // The number of bytes each rank sends to every other (one alltoall of counts).
   std::vector<long> exchangeCounts(const std::vector<long>& sendCounts) const;
   // Send send[k] (sendBytes[k] bytes) to ranks[k] and receive recvBytes[k] bytes from
@@ -46,6 +50,9 @@ class Communicator {
   void exchange(const std::vector<int>& ranks, const std::vector<const char*>& send,
                 const std::vector<long>& sendBytes, const std::vector<char*>& recv,
                 const std::vector<long>& recvBytes, int tag) const;
+  // The message of the lowest rank whose message is not empty ("" when all are): a
+  // failure one rank found, made every rank's, so that all stop together. Collective.
+  std::string firstMessage(const std::string& mine) const;
   void barrier() const;
   // Stop every rank at once (a rank that cannot go on while the others wait).
   [[noreturn]] void abort(int status) const;
@@ -58,6 +65,7 @@ class Communicator {
 
  private:
   Communicator() = default;
+  long pieces(long mine, std::vector<int>& counts, std::vector<int>& starts) const;
   bool started_ = false;
   int rank_ = 0, size_ = 1;
 };

@@ -3,6 +3,7 @@
 #include "pressure/FreeSurfaceRow.hpp"
 #include "boundaries/OpenBoundaryRows.hpp"
 #include "boundaries/WallParticles.hpp"
+#include "parallel/Communicator.hpp"
 #include <algorithm>
 
 namespace shizuku {
@@ -38,30 +39,34 @@ bool PressureEquation<D>::countRows(const FlowState<D>& s) {
     delta_.resize(n);
   }
 
+  // Counted over this rank's own particles (ghosts are another rank's rows), then summed.
+  const long owned = long(s.numOwned());
   long anyDirichlet = 0, m = 0, wallRows = 0;
 #pragma omp parallel for schedule(static) reduction(+ : anyDirichlet, m, wallRows)
   for (long i = 0; i < n; ++i) {
+    const long mine = i < owned;
     std::uint8_t isUnknown;
     if (s.isFluid(i)) {
       const auto c = P.surfaceClass(i);
       const bool onSurface = c == SurfaceClass::free || c == SurfaceClass::splash;
       isUnknown = !onSurface;
-      anyDirichlet += onSurface;
+      anyDirichlet += mine * onSurface;
       if (c == SurfaceClass::free && onSurface_ && FreeSurfaceRow<D>::frame(s, i, inward_[i], delta_[i]) &&
           FreeSurfaceRow<D>::depthMoment(s, i, inward_[i]) > 0)
         isUnknown = 2;
     } else if (hasPrescribedPressure(s, i)) {
       isUnknown = false;
-      ++anyDirichlet;
+      anyDirichlet += mine;
     } else {
       isUnknown = false;
       for (Index k = nl.begin(i); k < nl.end(i); ++k)
         if (s.isFluid(nl.j[k])) { isUnknown = true; break; }
-      wallRows += isUnknown;
+      wallRows += mine * isUnknown;
     }
     unknown_[i] = isUnknown;
-    m += isUnknown != 0;
+    m += mine * (isUnknown != 0);
   }
+  s.exchange(unknown_);  // a row's columns are its neighbours that are unknowns
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     Index c = 1;  // diagonal
@@ -80,9 +85,10 @@ bool PressureEquation<D>::countRows(const FlowState<D>& s) {
   }
   rowStart_[0] = 0;
   for (long i = 0; i < n; ++i) rowStart_[i + 1] += rowStart_[i];
-  numUnknowns_ = m;
-  hasWallRows_ = wallRows > 0;
-  return anyDirichlet > 0;
+  const auto& world = Communicator::world();
+  numUnknowns_ = world.sum(m);
+  hasWallRows_ = world.sum(wallRows) > 0;
+  return world.sum(anyDirichlet) > 0;
 }
 
 // The compressed rows (columns ascending: each neighbour row is sorted by j). Storage
@@ -162,13 +168,18 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
   }
   standardRows_ = fallbacks;
   if (pinned_) {
-    // Fix the pressure level: the first fluid unknown gets p = 0.
-    for (long i = 0; i < n; ++i)
-      if (unknown_[i] && s.isFluid(i)) {
-        for (Index k = rowStart_[i]; k < rowStart_[i + 1]; ++k) val[k] = (col[k] == i) ? 1.0 : 0.0;
-        b_[i] = 0;
-        break;
-      }
+    // Fix the pressure level: the first fluid unknown gets p = 0 (in a distributed run,
+    // the first of the lowest rank that has one).
+    const auto& world = Communicator::world();
+    const long owned = long(s.numOwned());
+    long first = -1;
+    for (long i = 0; i < owned && first < 0; ++i)
+      if (unknown_[i] && s.isFluid(i)) first = i;
+    const int pinRank = int(world.min(first >= 0 ? double(world.rank()) : double(world.size())));
+    if (pinRank == world.rank()) {
+      for (Index k = rowStart_[first]; k < rowStart_[first + 1]; ++k) val[k] = (col[k] == first) ? 1.0 : 0.0;
+      b_[first] = 0;
+    }
   }
 }
 
@@ -205,10 +216,37 @@ LinearSolveResult PressureEquation<D>::solve(FlowState<D>& s) {
   x_.resize(n);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) x_[i] = unknown_[i] ? p[i] : 0.0;  // warm start
-  LinearSolveResult res = numUnknowns_ > 0 ? solver_->solve(A_, b_, x_) : LinearSolveResult{true, 0, 0, ""};
+  LinearSolveResult res{true, 0, 0, ""};
+  if (numUnknowns_ > 0) res = s.halo ? solveDistributed(s) : solver_->solve(A_, b_, x_);
   if (numUnknowns_ == 0) x_.setZero();
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) p[i] = unknown_[i] ? x_[i] : hasPrescribedPressure(s, i) ? p[i] : 0.0;
+  s.exchange(p);
+  return res;
+}
+
+// This rank's rows (its own particles, the first numOwned) with global column numbers:
+// row i of rank r is global row offset_r + i, and a ghost's column is its owner's row
+// number, fetched through the halo. Ghost rows are not solved for here.
+template <int D>
+LinearSolveResult PressureEquation<D>::solveDistributed(const FlowState<D>& s) {
+  const auto& world = Communicator::world();
+  const long n = long(A_.rows()), owned = long(s.numOwned());
+  const long offset = world.exclusivePrefixSum(owned), total = world.sum(owned);
+  globalRow_.resize(n);
+  for (long i = 0; i < owned; ++i) globalRow_[i] = offset + i;
+  s.exchange(globalRow_);
+  const Index nnz = rowStart_[owned];
+  Aowned_.resize(owned, total);
+  Aowned_.data().resize(nnz, 0.25);
+  std::copy(rowStart_.begin(), rowStart_.begin() + owned + 1, Aowned_.outerIndexPtr());
+  const int* col = A_.innerIndexPtr();
+  for (Index k = 0; k < nnz; ++k) Aowned_.innerIndexPtr()[k] = int(globalRow_[col[k]]);
+  std::copy(A_.valuePtr(), A_.valuePtr() + nnz, Aowned_.valuePtr());
+  bOwned_ = b_.head(owned);
+  xOwned_ = x_.head(owned);
+  const LinearSolveResult res = solver_->solve(Aowned_, bOwned_, xOwned_);
+  x_.head(owned) = xOwned_;
   return res;
 }
 

@@ -59,6 +59,7 @@ class PressureEquation {
   bool countRows(const FlowState<D>& s);
   void fillRows(const FlowState<D>& s, const std::vector<double>& source);
   void fillSurfaceRow(const FlowState<D>& s, long i, Index pos, int* col, double* val);
+  LinearSolveResult solveDistributed(const FlowState<D>& s);
   std::unique_ptr<LinearSolver> solver_;
   bool onSurface_ = true;
   std::vector<std::uint8_t> unknown_;  // per particle: 0 = p known, 1 = solved for, 2 = eq. 6b row
@@ -71,6 +72,10 @@ class PressureEquation {
   SparseMatrixR A_;
   long numUnknowns_ = 0;
   Eigen::VectorXd b_, x_;
+  // A distributed run: this rank's rows with global columns, and their vectors.
+  std::vector<std::int64_t> globalRow_;
+  SparseMatrixR Aowned_;
+  Eigen::VectorXd bOwned_, xOwned_;
   bool pinned_ = false;
   long standardRows_ = 0;
 };

@@ -105,7 +105,12 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
     }
     P.surface[i] = std::uint8_t(c);
   }
-  if (!par_.enabled) return;
+  if (!par_.enabled) {
+    s.exchange(P.normal);
+    s.exchange(s.divR);
+    s.exchange(s.gradC);
+    return;
+  }
 
   // Stage 2: the scan-region test on candidates (reads only stage-1 results).
   const double coneRadius2 = 2.0 * h * h, cosCone = std::cos(M_PI / 4.0);
@@ -130,6 +135,7 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
   }
 
   // Vicinity: non-free fluid particles with a free (or splash) neighbour within vicinityRadius*h.
+  s.exchange(P.surface);  // the vicinity pass reads the neighbours' classes
   const double rv = par_.vicinityRadius * h;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
@@ -148,6 +154,10 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
     if (P.surface[i] == 4) P.surface[i] = std::uint8_t(SurfaceClass::vicinity);
     else if (P.surface[i] == std::uint8_t(SurfaceClass::interior)) P.normal[i].setZero();
   }
+  s.exchange(P.surface);
+  s.exchange(P.normal);
+  s.exchange(s.divR);
+  s.exchange(s.gradC);
 }
 
 template class FreeSurfaceDetector<2>;

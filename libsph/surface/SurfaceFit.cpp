@@ -98,6 +98,8 @@ void computeSurfaceFit(FlowState<D>& s, const SurfaceFitSettings& set) {
       s.fitDistance[i] = distance;
     }
   }
+  s.exchange(nrm);  // the curvature reads the neighbours' fitted normals
+  s.exchange(s.fitDistance);
   // Curvature from the fitted normals of the free-surface neighbours (eq. 20).
 #pragma omp parallel for schedule(dynamic, 64)
   for (long i = 0; i < n; ++i) {
@@ -105,6 +107,7 @@ void computeSurfaceFit(FlowState<D>& s, const SurfaceFitSettings& set) {
     if (!s.isFluid(i) || !isFitted(s.surfaceClass(i))) continue;
     s.curvature[i] = set.curvatureFactor * curvatureSum(s, std::size_t(i));
   }
+  s.exchange(s.curvature);
 }
 
 template void computeSurfaceFit<2>(FlowState<2>&, const SurfaceFitSettings&);

@@ -1,0 +1,166 @@
+#!/usr/bin/python3
+"""How a distributed run starts, stops and reports (docs/parallel.md 2, 8, 9), on copies of
+the dam-break tutorial run without function objects:
+  - several ranks started without -parallel: exit 1, one error message (not one per rank)
+    naming -parallel, nothing written;
+  - a misspelt keyword (controlDict `endTme`) on two ranks: exit 1, one error naming the
+    file, the line and the keyword it misspells, nothing written;
+  - SIGTERM sent to every rank (what a batch system's cancel does) in the middle of a run:
+    exit 0, one time directory written at the step all ranks stopped at, holding every
+    particle exactly once;
+  - `stopAt writeNow` written into system/controlDict while two ranks run: the same;
+  - a restart across rank counts: 20 steps on 2 ranks, 20 more on 3 from the time written,
+    20 more on 1 (serial): equal to one serial run of 60 steps within compareWithSerial.py's
+    bounds (pressure solved to 1e-11, as there);
+  - five ranks, one of which holds no fluid at all (the tank's upper walls): 20 steps equal
+    to the serial run within the same bounds.
+
+usage: ranksAndInput.py SOURCE WORK --shizuku BIN --mpirun "mpirun --allow-run-as-root --oversubscribe"
+"""
+import os
+import re
+import shlex
+import signal
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "support"))
+import shizukutest as st  # noqa: E402
+
+compare = st.load_module(os.path.join(HERE, "compareWithSerial.py"), "compareWithSerial")
+
+
+def fresh(a, name, end=0.002, write=0.002):
+    case = os.path.join(a.work, name)
+    st.copy_case(os.path.join(a.source, "tutorials", "damBreak"), case)
+    compare.set_control(case, end, write)
+    st.set_key(os.path.join(case, "system", "controlDict"), "progressInterval", 10)
+    return case
+
+
+def launch(a, case, ranks, parallel=True):
+    cmd = shlex.split(a.mpirun) + ["-np", str(ranks), a.shizuku, "-case", case, "-threads", "1", "-noFunctionObjects"]
+    return cmd + (["-parallel"] if parallel else [])
+
+
+def errors(text):
+    return [line for line in text.splitlines() if line.startswith("Error:")]
+
+
+def written(case):
+    return [name for _, name in st.time_dirs(case)]
+
+
+def stopped_run(a, name, stop):
+    """Start two ranks on a long run, stop them with `stop(case, process)` once step 20 is
+    logged; returns (case, exit status, log text)."""
+    case = fresh(a, name, end=1, write=0.5)
+    log = open(os.path.join(case, "log.parallel"), "w")
+    p = subprocess.Popen(launch(a, case, 2), stdout=log, stderr=subprocess.STDOUT)
+    deadline = time.time() + 120
+    while time.time() < deadline and p.poll() is None:
+        with open(os.path.join(case, "log.parallel")) as f:
+            if re.search(r"^step 20 ", f.read(), re.M):
+                break
+        time.sleep(0.2)
+    stop(case, p)
+    try:
+        rc = p.wait(timeout=120)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        rc = "hung"
+    log.close()
+    with open(os.path.join(case, "log.parallel")) as f:
+        return case, rc, f.read()
+
+
+def check_stop(name, case, rc, text, ranks_total):
+    times = written(case)
+    st.check(rc == 0, f"{name}: exit status {rc} (0 expected)")
+    new = [t for t in times if t != "0"]
+    if st.check(len(new) == 1, f"{name}: one time directory written after the start ({new})"):
+        data = st.read_vtp(os.path.join(case, new[0], "particles.vtp"))
+        import numpy as np
+        ids = data["id"] if data is not None else np.array([])
+        st.check(len(ids) == ranks_total and len(np.unique(ids)) == ranks_total,
+                 f"{name}: time {new[0]} holds every particle once ({len(ids)} of {ranks_total})")
+
+
+def main():
+    a = compare.arguments().parse_args()
+    a.work = os.path.abspath(a.work)
+    os.makedirs(a.work, exist_ok=True)
+
+    case = fresh(a, "withoutParallel")
+    r = subprocess.run(launch(a, case, 2, parallel=False), capture_output=True, text=True)
+    out = r.stdout + r.stderr
+    st.check(r.returncode != 0, f"two ranks without -parallel: exit status {r.returncode}")
+    errs = errors(out)
+    st.check(len(errs) == 1 and "-parallel" in errs[0], f"two ranks without -parallel: one error naming -parallel {errs}")
+    st.check(written(case) == [], "two ranks without -parallel: nothing written")
+
+    case = fresh(a, "misspelt")
+    path = os.path.join(case, "system", "controlDict")
+    with open(path) as f:
+        text = f.read()
+    with open(path, "w") as f:
+        f.write(text.replace("\nendTime ", "\nendTme ", 1))
+    r = subprocess.run(launch(a, case, 2), capture_output=True, text=True)
+    errs = errors(r.stdout + r.stderr)
+    st.check(r.returncode == 1, f"a misspelt keyword on two ranks: exit status {r.returncode} (1 expected)")
+    st.check(len(errs) == 1 and "endTme" in errs[0] and "misspelling" in errs[0] and "controlDict" in errs[0],
+             f"a misspelt keyword on two ranks: one error naming the file, keyword and its correction {errs}")
+    st.check(written(case) == [], "a misspelt keyword on two ranks: nothing written")
+
+    whole = 6418  # the dam-break tutorial's fluid and wall particles
+
+    def terminate(case, p):
+        pids = subprocess.run(["pgrep", "-f", f"^{a.shizuku} -case {case} "], capture_output=True, text=True).stdout.split()
+        for pid in pids:
+            os.kill(int(pid), signal.SIGTERM)
+    case, rc, text = stopped_run(a, "sigterm", terminate)
+    check_stop("SIGTERM to both ranks", case, rc, text, whole)
+
+    def write_now(case, p):
+        path = os.path.join(case, "system", "controlDict")
+        st.set_key(path, "stopAt", "writeNow")
+    case, rc, text = stopped_run(a, "writeNow", write_now)
+    check_stop("stopAt writeNow on two ranks", case, rc, text, whole)
+
+    # Restart 2 -> 3 -> 1 ranks: each leg starts from the time the last one wrote.
+    ref = fresh(a, "restartSerial", end=0.006, write=0.002)
+    compare.tighten(ref)
+    got = fresh(a, "restart", end=0.002, write=0.002)
+    compare.tighten(got)
+    legs = []
+    for ranks, end in ((2, 0.002), (3, 0.004), (1, 0.006)):
+        compare.set_control(got, end, 0.002)
+        legs.append(compare.parallel(a, got, ranks) if ranks > 1 else compare.serial(a, got))
+        with open(os.path.join(got, "log.parallel" if ranks > 1 else "log.serial")) as f:
+            legs[-1] = (legs[-1], re.search(r"^Starting at time (\S+)", f.read(), re.M))
+    starts = [m.group(1) if m else None for _, m in legs]
+    rs = compare.serial(a, ref)
+    if st.check(rs == 0 and all(rc == 0 for rc, _ in legs) and starts == ["0", "0.002", "0.004"],
+                f"restart 2 -> 3 -> 1 ranks: each leg ran from the last one's time (starts {starts})"):
+        compare.compare("restart 2 -> 3 -> 1 ranks, against serial", os.path.join(ref, "0.006", "particles.vtp"),
+                        os.path.join(got, "0.006", "particles.vtp"), 3, 0.01)
+
+    ref = fresh(a, "fiveSerial")
+    got = fresh(a, "fiveRanks")
+    compare.tighten(ref)
+    compare.tighten(got)
+    rs = compare.serial(a, ref)
+    rp = compare.parallel(a, got, 5)
+    if st.check(rs == 0 and rp == 0, f"serial and five-rank runs (exit {rs}, {rp})"):
+        with open(os.path.join(got, "log.parallel")) as f:
+            line = next((x for x in f if x.startswith("Decomposition:")), "")
+        st.check("(0 fluid" in line, f"five ranks: one rank holds no fluid ({line.strip()})")
+        compare.compare("damBreak from the start", os.path.join(ref, "0.002", "particles.vtp"),
+                        os.path.join(got, "0.002", "particles.vtp"), 5, 0.01)
+    sys.exit(st.summary())
+
+
+if __name__ == "__main__":
+    main()
