@@ -1,6 +1,7 @@
 // The domain decomposition of a distributed run: see DomainDecomposition.hpp.
 #include "decomposition/DomainDecomposition.hpp"
 #include "decomposition/ParticlePacking.hpp"
+#include "core/Log.hpp"
 #include <algorithm>
 #include <numeric>
 
@@ -12,7 +13,7 @@ DomainDecomposition<D>::DomainDecomposition(const DecompositionSettings& setting
     : settings_(settings), zoltan_(settings.method, D), halo_(haloWidth, box) {}
 
 template <int D>
-void DomainDecomposition<D>::start(ParticleSet<D>& P) {
+void DomainDecomposition<D>::start(ParticleSet<D>& P, long step) {
   const auto& world = Communicator::world();
   const std::size_t n = P.size(), first = n * world.rank() / world.size(), last = n * (world.rank() + 1) / world.size();
   std::vector<std::uint8_t> outside(n, 0);
@@ -20,7 +21,8 @@ void DomainDecomposition<D>::start(ParticleSet<D>& P) {
   P.removeMarked(outside);
   partition(P, true);
   migrate(P);
-  distribute(P);
+  lastMigration_ = step;
+  distribute(P, step);
 }
 
 template <int D>
@@ -34,18 +36,24 @@ void DomainDecomposition<D>::partition(const ParticleSet<D>& P, bool fromScratch
 }
 
 template <int D>
-void DomainDecomposition<D>::distribute(ParticleSet<D>& P) {
+void DomainDecomposition<D>::distribute(ParticleSet<D>& P, long step) {
   const auto& world = Communicator::world();
   stripGhosts(P);
   const long mine = long(P.size()), total = world.sum(mine), most = world.max(mine);
   const double mean = double(total) / world.size();
-  if (mean > 0 && most / mean - 1 > settings_.rebalanceThreshold) {
-    partition(P, false);
+  // step < lastMigration_: an earlier state was restored.
+  if (step - lastMigration_ >= settings_.migrationInterval || step < lastMigration_) {
+    if (mean > 0 && most / mean - 1 > settings_.rebalanceThreshold) {
+      partition(P, false);
+    } else {
+      owner_.resize(P.size());
+      for (std::size_t i = 0; i < P.size(); ++i) owner_[i] = zoltan_.ownerOf(P.position[i].data());
+    }
+    migrate(P);
+    lastMigration_ = step;
   } else {
-    owner_.resize(P.size());
-    for (std::size_t i = 0; i < P.size(); ++i) owner_[i] = zoltan_.ownerOf(P.position[i].data());
+    stats_.migrated = 0;
   }
-  migrate(P);
   halo_.build(P);
   ghostsPresent_ = true;
   const long owned = long(halo_.numOwned());
@@ -53,6 +61,32 @@ void DomainDecomposition<D>::distribute(ParticleSet<D>& P) {
   stats_.ghosts = long(halo_.numGhosts());
   stats_.neighbourRanks = halo_.numNeighbourRanks();
   stats_.imbalance = mean > 0 ? world.max(owned) / mean - 1 : 0;
+  ++stats_.distributions;
+  stats_.ghostSum += double(stats_.ghosts);
+  stats_.ownedSum += double(owned);
+  stats_.neighbourSum += stats_.neighbourRanks;
+  stats_.migratedSum += double(stats_.migrated);
+}
+
+template <int D>
+std::string DomainDecomposition<D>::summary() const {
+  const auto& world = Communicator::world();
+  const double n = std::max<long>(1, stats_.distributions);
+  const std::vector<double> mine = {stats_.ghostSum / n, stats_.ghostSum / std::max(1.0, stats_.ownedSum),
+                                    stats_.neighbourSum / n, double(halo_.messagesSent()) / n,
+                                    halo_.bytesSent() / n, double(halo_.updates()) / n};
+  const std::vector<double> all = world.allGather(mine);
+  std::vector<double> mean(mine.size(), 0.0), most(mine.size(), 0.0);
+  for (int r = 0; r < world.size(); ++r)
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+      mean[k] += all[std::size_t(r) * mine.size() + k] / world.size();
+      most[k] = std::max(most[k], all[std::size_t(r) * mine.size() + k]);
+    }
+  return cat("Halo per rank and step (mean / largest over ", world.size(), " ranks): ghosts ", mean[0], " / ", most[0],
+             " (", 100 * mean[1], " / ", 100 * most[1], " % of its own particles), neighbour ranks ", mean[2], " / ",
+             most[2], ", field updates ", mean[5], ", messages sent ", mean[3], " / ", most[3], ", bytes sent ",
+             mean[4], " / ", most[4], "; particles migrated per step ", stats_.migratedSum / n,
+             ", repartitions ", stats_.repartitions);
 }
 
 // Send every particle whose owner is another rank to it; append the ones received.

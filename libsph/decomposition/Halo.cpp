@@ -111,6 +111,8 @@ void Halo<D>::build(ParticleSet<D>& P) {
     recvBytes_[r] = recvCount[r] * long(bytes);
   }
   world.exchange(ranks_, sendPtr_, sendBytes_, recvPtr_, recvBytes_, 12);
+  for (std::size_t r = 0; r < nr; ++r) messages_ += 1 + (sendBytes_[r] > 0);  // the count, then the particles
+  bytes_ += double(nr * sizeof(long) + sendBuf_.size());
   P.resize(numOwned_ + numGhosts_);
   ParticlePacking<D>::ensureFields(P, mask);
   const char* in = recvBuf_.data();

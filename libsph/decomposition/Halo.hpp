@@ -38,6 +38,10 @@ class Halo {
   // Statistics of the last build: neighbour ranks, and particles sent (docs/parallel.md 7).
   int numNeighbourRanks() const { return int(ranks_.size()); }
   long numSent() const { return long(sendIdx_.size()); }
+  // Since the start: field updates, messages sent and bytes sent (the builds included).
+  long updates() const { return updates_; }
+  long messagesSent() const { return messages_; }
+  double bytesSent() const { return bytes_; }
   const std::vector<int>& neighbourRanks() const { return ranks_; }
 
  private:
@@ -56,6 +60,8 @@ class Halo {
   mutable std::vector<const char*> sendPtr_;
   mutable std::vector<char*> recvPtr_;
   mutable std::vector<long> sendBytes_, recvBytes_;
+  mutable long updates_ = 0, messages_ = 0;
+  mutable double bytes_ = 0;
 };
 
 template <int D>
@@ -74,6 +80,9 @@ void Halo<D>::update(std::vector<T>& f) const {
     recvBytes_[r] = (recvStart_[r + 1] - recvStart_[r]) * long(sizeof(T));
   }
   Communicator::world().exchange(ranks_, sendPtr_, sendBytes_, recvPtr_, recvBytes_, 11);
+  ++updates_;
+  for (std::size_t r = 0; r < nr; ++r) messages_ += sendBytes_[r] > 0;
+  bytes_ += double(sendBuf_.size());
 }
 
 }  // namespace shizuku

@@ -44,7 +44,7 @@ template <int D>
 void IsphStep<D>::distribute() {
   if (!decomposition_) return;
   StageTimers::Scope t(timers_, st_.decomposition);
-  decomposition_->distribute(s_.particles);
+  decomposition_->distribute(s_.particles, s_.step);
   s_.halo = &decomposition_->halo();
   particleCountChanged();
 }

@@ -76,7 +76,7 @@ class IsphStep {
   // hierarchy), so that a run stopped now restarts bit for bit; and a request that it
   // uses none (docs/reliability.md, "Restart is exact").
   bool nextStepStartsAfresh() const {
-    return scheme_.ppe->nextSolveStartsAfresh(s_.particles) || reorderDue();
+    return scheme_.ppe->nextSolveStartsAfresh(s_) || reorderDue();
   }
   // The particles are reordered by cells before the next step (every reorderInterval steps).
   bool reorderDue() const {

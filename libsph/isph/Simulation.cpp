@@ -54,7 +54,7 @@ void Simulation<D>::distribute(const DecompositionSettings& settings) {
     throw InputError(cat(files_.dir, ": inlets and outlets do not run on several ranks yet (docs/parallel.md, "
                          "\"Status\"): run this case on one rank"));
   decomposition_ = std::make_unique<DomainDecomposition<D>>(settings, s_.kernel.support(), s_.periodic);
-  decomposition_->start(s_.particles);
+  decomposition_->start(s_.particles, s_.step);
   s_.halo = &decomposition_->halo();
   // Each rank counts the fluid it removes from here on; rank 0 carries what was read.
   const auto& world = Communicator::world();
@@ -98,7 +98,9 @@ std::string Simulation<D>::pipeline() const {
 template <int D>
 int Simulation<D>::run() {
   TimeLoop<D> loop(files_, rc_, s_, *step_, *guard_, *outflow_, functionObjects_, timers_, startTimeName_);
-  return loop.run(pipeline());
+  const int status = loop.run(pipeline());
+  if (decomposition_) info(decomposition_->summary());
+  return status;
 }
 
 template <int D>

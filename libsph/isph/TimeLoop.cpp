@@ -211,11 +211,12 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
     p.densityErrorRms = guard_.densityError().interior.count > 0 ? guard_.densityError().interior.rms : 0.0;
     p.fractionDone = (s_.time - startTime_) / span_;
     p.wallSeconds = clockSeconds() - wallStart;
-    p.removed = s_.balance.removedCount;
-    p.removedFraction = s_.balance.removedMass / std::max(s_.balance.removedMass + fluidCount_ * s_.particles.mass, 1e-300);
-    p.leaks = outflow_.leakCount();
-    p.released = s_.balance.released;
-    p.captured = s_.balance.captured;
+    const FluidBalance b = globalBalance(s_.balance);  // every rank's (the same step on all: collective)
+    p.removed = b.removedCount;
+    p.removedFraction = b.removedMass / std::max(b.removedMass + fluidCount_ * s_.particles.mass, 1e-300);
+    p.leaks = Communicator::world().sum(long(outflow_.leakCount()));
+    p.released = b.released;
+    p.captured = b.captured;
     info(progressLine(p, step_.report()));
   }
   return stopNow;

@@ -79,6 +79,7 @@ std::unique_ptr<LinearSolver> createPetsc(const Dictionary* d, const std::string
   const std::string pc = key::preconditioner.read(d);
   if (pc == "ILUT") d->error("preconditioner", "ILUT is not available with PETSc: use AMG, diagonal or ILU0");
   s.preconditioner = pc == "AMG" ? "hypreAMG" : pc;
+  s.reuse = s.preconditioner == "hypreAMG" ? key::amgReuse.read(d) : 1;
   if (type != "PETSc") s.note = cat("; the case's ", type, " needs the whole matrix on one rank");
   if (d)
     for (const char* k : {"blocks", "dropTolerance", "fillFactor", "amgReuse", "reuseSymbolic"}) d->markRead(k);

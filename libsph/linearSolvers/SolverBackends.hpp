@@ -34,6 +34,7 @@ struct PetscSettings {
   std::string preconditioner = "hypreAMG";  // hypreAMG (AMG), diagonal, ILU0
   double tolerance = 1e-8;
   int maxIterations = 2000;
+  int reuse = 10;                          // solves a preconditioner is kept (amgReuse)
   std::string note;                        // appended to describe()
 };
 bool petscAvailable();

@@ -14,8 +14,9 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
   // The particle order changed (cell reordering): a preconditioner kept from an
   // earlier step no longer matches the rows.
   const auto& P = s.particles;
-  if (numberingChanged(P)) {
-    ids_ = P.id;
+  const std::size_t owned = s.numOwned();
+  if (Communicator::world().any(numberingChanged(P, owned))) {  // on any rank: the global rows moved
+    ids_.assign(P.id.begin(), P.id.begin() + long(owned));
     solver_->startAfreshAtNextSolve();
   }
   pinned_ = !anyDirichlet && numUnknowns_ > 0;

@@ -36,8 +36,8 @@ class PressureEquation {
   // Whether the next solve will start afresh: the solver's own reuse cycle ends, or the
   // particles (ids in order) differ from the last assembly's (reordered, released,
   // captured or removed), which rebuilds as well.
-  bool nextSolveStartsAfresh(const ParticleSet<D>& P) const {
-    return solver_->nextSolveStartsAfresh() || numberingChanged(P);
+  bool nextSolveStartsAfresh(const FlowState<D>& s) const {
+    return solver_->nextSolveStartsAfresh() || numberingChanged(s.particles, s.numOwned());
   }
   // source[i] = b_i for fluid rows (rho/dt <div u*>_i plus stabilization terms).
   void assemble(const FlowState<D>& s, const std::vector<double>& source);
@@ -52,9 +52,10 @@ class PressureEquation {
   long standardRows() const { return standardRows_; }
 
  private:
-  // The particles (ids in order) differ from those of the last assembly.
-  bool numberingChanged(const ParticleSet<D>& P) const {
-    return ids_.size() != P.id.size() || !std::equal(ids_.begin(), ids_.end(), P.id.begin());
+  // The rows' particles, this rank's own `owned` first ones (ids in order), differ from
+  // those of the last assembly.
+  bool numberingChanged(const ParticleSet<D>& P, std::size_t owned) const {
+    return ids_.size() != owned || owned > P.id.size() || !std::equal(ids_.begin(), ids_.end(), P.id.begin());
   }
   bool countRows(const FlowState<D>& s);
   void fillRows(const FlowState<D>& s, const std::vector<double>& source);

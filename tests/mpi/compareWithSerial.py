@@ -24,16 +24,17 @@ tutorials' 1e-8 would let the solvers' own differences hide a wrong ghost):
 Asserted for each case and rank count:
   - 1 rank with -parallel: the serial run bit for bit (no decomposition on one rank; the
     same solver);
-  - 2 and 3 ranks: positions within 1e-8 d0, velocities within 1e-9 max|U| and pressures
-    within 1e-9 max|p| of the serial run's, every particle. The ranks' pressure equation
-    (PETSc, BoomerAMG) stops at the same relative residual as the serial one (BiCGSTAB, own
-    AMG) but not at the same vector, and sums over a particle's neighbours run in another
-    order. Measured 2026-12-03, the largest differences of the four cases were 4.4e-11
-    max|p|, 3.6e-11 max|U| and 3.3e-10 d0 (all three in the 3D Taylor-Green box); with the
-    pressure solved to 1e-9 instead they grew 11-25 times (1.0e-9, 6.9e-10, 3.7e-9 d0): the
-    differences follow the solver's tolerance. The bounds are 20-30 times the largest
-    measured. A missing halo exchange reads four to seven orders above them
-    (docs/parallel.md 9 lists the planted faults and what each reads);
+  - 2 and 3 ranks: positions within 1e-8 d0, velocities within 1e-8 max|U| and pressures
+    within 1e-8 max|p| of the serial run's, every particle. The ranks' pressure equation
+    (PETSc, BoomerAMG, its hierarchy kept for up to 10 steps) stops at the same relative
+    residual as the serial one (BiCGSTAB, own AMG) but not at the same vector, and sums over
+    a particle's neighbours run in another order. Measured 2026-12-03, the largest
+    differences of the five cases were 4.0e-10 max|p|, 8.8e-11 max|U| and 3.9e-10 d0 (all in
+    the 3D Taylor-Green box, whose pressure level is pinned; a new hierarchy every step
+    gave 4.4e-11, 3.6e-11 and 3.3e-10 d0, and with the pressure solved to 1e-9 instead of
+    1e-11 these grew 11-25 times: the differences follow the solver's tolerance). The bounds
+    are 25-110 times the largest measured. A missing halo exchange reads four to seven
+    orders above them (docs/parallel.md 8 lists the planted faults and what each reads);
   - the surface classes and particle types are equal;
   - damBreak: every function-object file but timing's holds the serial run's numbers within
     1e-8 of each column's largest value (measured: 4e-12)."""
@@ -48,7 +49,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
 import shizukutest as st  # noqa: E402
 
-BOUND = {"x": 1e-8, "U": 1e-9, "p": 1e-9}  # d0, max|U|, max|p|
+BOUND = {"x": 1e-8, "U": 1e-8, "p": 1e-8}  # d0, max|U|, max|p|
 TOLERANCE = "1e-11"
 
 
