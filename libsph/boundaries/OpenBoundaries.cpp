@@ -1,6 +1,7 @@
 // Inlets and outlets at run time: see OpenBoundaries.hpp.
 #include "boundaries/OpenBoundaries.hpp"
 #include "core/Log.hpp"
+#include "parallel/Communicator.hpp"
 #include <cmath>
 
 namespace shizuku {
@@ -97,6 +98,7 @@ bool OpenBoundaries<D>::afterStep(FlowState<D>& s) {
   bool changed = false;
   bool anyRemoved = false;
   remove_.assign(n, 0);
+  released_.clear();
   for (std::size_t i = 0; i < n; ++i) {
     if (P.isInlet(i)) {
       P.position[i] += dt * P.velocity[i];
@@ -113,7 +115,7 @@ bool OpenBoundaries<D>::afterStep(FlowState<D>& s) {
       P.type[k] = std::uint8_t(ParticleType::inlet);
       P.position[k][b.axis] -= b.sign * b.length();
       P.velocity[k] = inletVelocity(r, P.position[k], s.time);
-      P.id[k] = P.nextId++;
+      released_.push_back(k);
       remove_.push_back(0);
       ++crossings_[r].count;
       ++s.balance.released;
@@ -147,8 +149,20 @@ bool OpenBoundaries<D>::afterStep(FlowState<D>& s) {
       }
     }
   }
+  numberReleased(P);
   if (anyRemoved) P.removeMarked(remove_);
   return changed || anyRemoved;
+}
+
+// The new inlet particles' ids, in order from nextId, the ranks' in rank order, so that ids
+// stay unique across ranks (in serial: nextId, nextId + 1, ...). Collective.
+template <int D>
+void OpenBoundaries<D>::numberReleased(ParticleSet<D>& P) const {
+  const auto& world = Communicator::world();
+  const long mine = long(released_.size());
+  const std::int64_t first = P.nextId + world.exclusivePrefixSum(mine);
+  for (std::size_t k = 0; k < released_.size(); ++k) P.id[released_[k]] = first + std::int64_t(k);
+  P.nextId += world.sum(mine);
 }
 
 template class OpenBoundaries<2>;

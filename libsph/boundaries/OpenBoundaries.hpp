@@ -49,11 +49,13 @@ class OpenBoundaries {
  private:
   int regionOf(const Vec<D>& x, bool inlet) const;
   Vec<D> inletVelocity(int r, const Vec<D>& x, double t) const;
+  void numberReleased(ParticleSet<D>& P) const;
 
   std::vector<OpenBoundaryRegion<D>> regions_;
   std::vector<std::unique_ptr<InletVelocity<D>>> velocity_;  // per region; null for outlets
   std::vector<BoundaryCrossings> crossings_;
   std::vector<std::uint8_t> remove_;  // scratch: outlet particles past their far face
+  std::vector<std::size_t> released_; // scratch: the inlet particles added this step (ids to give)
   double d0_ = 0;
 };
 

@@ -69,7 +69,7 @@ double Flux<D>::planeFlux(const FlowState<D>& s, const Vec<D>& point, const Vec<
 
 template <int D>
 long Flux<D>::crossedNow(const RunInfo& info) const {
-  return (*info.crossings)[index_].count;
+  return Communicator::world().sum((*info.crossings)[index_].count);  // each rank counts its own crossings
 }
 
 template <int D>

@@ -2,6 +2,7 @@
 #include "isph/IsphStep.hpp"
 #include "boundaries/WallParticles.hpp"
 #include "surface/SurfaceFit.hpp"
+#include "parallel/Communicator.hpp"
 
 namespace shizuku {
 
@@ -44,6 +45,15 @@ template <int D>
 void IsphStep<D>::distribute() {
   if (!decomposition_) return;
   StageTimers::Scope t(timers_, st_.decomposition);
+  // A non-finite position stops every rank together (the neighbour search would stop only
+  // the rank that holds it, and the others would wait for it).
+  long bad = -1;
+  for (std::size_t i = 0; i < s_.particles.size() && bad < 0; ++i)
+    if (!s_.particles.position[i].allFinite()) bad = long(i);
+  const std::string failure = Communicator::world().firstMessage(
+      bad < 0 ? std::string() : cat("particle id ", s_.particles.id[std::size_t(bad)], " has a non-finite position at step ",
+                                    s_.step, ", time ", s_.time));
+  if (!failure.empty()) throw NumericalError(failure);
   decomposition_->distribute(s_.particles, s_.step);
   s_.halo = &decomposition_->halo();
   particleCountChanged();

@@ -50,9 +50,6 @@ Simulation<D>::~Simulation() = default;
 // halo (docs/parallel.md 3).
 template <int D>
 void Simulation<D>::distribute(const DecompositionSettings& settings) {
-  if (s_.hasOpenBoundaries)
-    throw InputError(cat(files_.dir, ": inlets and outlets do not run on several ranks yet (docs/parallel.md, "
-                         "\"Status\"): run this case on one rank"));
   decomposition_ = std::make_unique<DomainDecomposition<D>>(settings, s_.kernel.support(), s_.periodic);
   decomposition_->start(s_.particles, s_.step);
   s_.halo = &decomposition_->halo();

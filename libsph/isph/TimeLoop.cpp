@@ -188,10 +188,9 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
   step_.advance(dt);
   previousDt = dt;
   particleSteps += fluidCount_;
-  if (outflow_.afterStep(s_, guard_.goodPositions(), guard_)) {
-    step_.particleCountChanged();
-    fluidCount_ = fluidCount();
-  }
+  const bool changed = outflow_.afterStep(s_, guard_.goodPositions(), guard_);
+  if (changed) step_.particleCountChanged();
+  if (Communicator::world().any(changed)) fluidCount_ = fluidCount();  // a sum over the ranks: all take part
   step_.analyse();
   step_.report().maxSpeed = guard_.check(s_, "after the step", files_.dir);
   const bool scheduled = rc_.isWriteStep(s_.time, s_.step);
