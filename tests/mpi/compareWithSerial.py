@@ -32,7 +32,7 @@ Asserted for each case and rank count:
     (PETSc, BoomerAMG, its hierarchy kept for up to 10 steps) stops at the same relative
     residual as the serial one (BiCGSTAB, own AMG) but not at the same vector, and sums over
     a particle's neighbours run in another order. Measured 2026-12-03, the largest
-    differences of the five cases were 4.0e-10 max|p|, 8.8e-11 max|U| and 3.9e-10 d0 (all in
+    differences of the cases were 4.0e-10 max|p|, 8.8e-11 max|U| and 3.9e-10 d0 (all in
     the 3D Taylor-Green box, whose pressure level is pinned; a new hierarchy every step
     gave 4.4e-11, 3.6e-11 and 3.3e-10 d0, and with the pressure solved to 1e-9 instead of
     1e-11 these grew 11-25 times: the differences follow the solver's tolerance). The bounds
