@@ -94,8 +94,7 @@ template <int D>
 void DomainDecomposition<D>::migrate(ParticleSet<D>& P) {
   const auto& world = Communicator::world();
   const int me = world.rank(), nranks = world.size();
-  long mask = 0;
-  for (long m : world.allGather(ParticlePacking<D>::fieldMask(P))) mask |= m;
+  const long mask = ParticlePacking<D>::agreedFieldMask(P);
   ParticlePacking<D>::ensureFields(P, mask);
   const std::size_t bytes = ParticlePacking<D>::bytesPerParticle(P, mask);
   const std::size_t n = P.size();

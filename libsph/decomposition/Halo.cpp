@@ -12,15 +12,16 @@ namespace {
 double gap(double a, double b, double c, double d) { return std::max({0.0, c - b, a - d}); }
 }  // namespace
 
-// Distance from x to a box (lo[D], hi[D]); in periodic directions the nearest image.
+// Distance between the box (lo[D], hi[D]) and `box` (the same layout); in periodic
+// directions the nearest image. A point is the box lo = hi = x.
 template <int D>
-double Halo<D>::distanceToBox(const Vec<D>& x, const double* box) const {
+double Halo<D>::boxDistance(const double* lo, const double* hi, const double* box) const {
   double d2 = 0;
   for (int a = 0; a < D; ++a) {
-    double g = gap(x[a], x[a], box[a], box[D + a]);
+    double g = gap(lo[a], hi[a], box[a], box[D + a]);
     if (box_.periodic[a]) {
       const double L = box_.hi[a] - box_.lo[a];
-      g = std::min({g, gap(x[a] - L, x[a] - L, box[a], box[D + a]), gap(x[a] + L, x[a] + L, box[a], box[D + a])});
+      g = std::min({g, gap(lo[a] - L, hi[a] - L, box[a], box[D + a]), gap(lo[a] + L, hi[a] + L, box[a], box[D + a])});
     }
     d2 += g * g;
   }
@@ -48,17 +49,7 @@ void Halo<D>::findNeighbourRanks(const ParticleSet<D>& P, std::vector<double>& b
   for (int r = 0; r < world.size(); ++r) {
     const double* b = &boxes[std::size_t(r) * 2 * D];
     if (r == world.rank() || !(b[0] <= b[D])) continue;
-    double d2 = 0;
-    for (int a = 0; a < D; ++a) {
-      double g = gap(mine[a], mine[D + a], b[a], b[D + a]);
-      if (box_.periodic[a]) {
-        const double L = box_.hi[a] - box_.lo[a];
-        g = std::min({g, gap(mine[a] - L, mine[D + a] - L, b[a], b[D + a]),
-                      gap(mine[a] + L, mine[D + a] + L, b[a], b[D + a])});
-      }
-      d2 += g * g;
-    }
-    if (std::sqrt(d2) < width_) ranks_.push_back(r);
+    if (boxDistance(&mine[0], &mine[D], b) < width_) ranks_.push_back(r);
   }
 }
 
@@ -70,8 +61,7 @@ void Halo<D>::build(ParticleSet<D>& P) {
   findNeighbourRanks(P, boxes);
   const auto& world = Communicator::world();
   // The field mask every rank agrees on (a rank without particles cannot tell).
-  long mask = 0;
-  for (long m : world.allGather(ParticlePacking<D>::fieldMask(P))) mask |= m;
+  const long mask = ParticlePacking<D>::agreedFieldMask(P);
   ParticlePacking<D>::ensureFields(P, mask);
 
   const std::size_t nr = ranks_.size();
@@ -80,7 +70,7 @@ void Halo<D>::build(ParticleSet<D>& P) {
   for (std::size_t r = 0; r < nr; ++r) {
     const double* b = &boxes[std::size_t(ranks_[r]) * 2 * D];
     for (std::size_t i = 0; i < numOwned_; ++i)
-      if (distanceToBox(P.position[i], b) < width_) sendIdx_.push_back(Index(i));
+      if (boxDistance(P.position[i].data(), P.position[i].data(), b) < width_) sendIdx_.push_back(Index(i));
     sendStart_[r + 1] = long(sendIdx_.size());
   }
   // Counts first (one long each way per neighbour), then the particles.

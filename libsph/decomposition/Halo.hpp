@@ -46,7 +46,7 @@ class Halo {
 
  private:
   void findNeighbourRanks(const ParticleSet<D>& P, std::vector<double>& boxes);
-  double distanceToBox(const Vec<D>& x, const double* box) const;
+  double boxDistance(const double* lo, const double* hi, const double* box) const;
 
   double width_;
   PeriodicBox<D> box_;

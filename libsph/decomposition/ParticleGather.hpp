@@ -17,8 +17,7 @@ namespace shizuku {
 template <int D>
 ParticleSet<D> gatherParticles(const ParticleSet<D>& P, std::size_t owned) {
   const auto& world = Communicator::world();
-  long mask = 0;
-  for (long m : world.allGather(ParticlePacking<D>::fieldMask(P))) mask |= m;
+  const long mask = ParticlePacking<D>::agreedFieldMask(P);
   const std::size_t bytes = ParticlePacking<D>::bytesPerParticle(P, mask);
   std::vector<char> mine(owned * bytes);
   char* out = mine.data();

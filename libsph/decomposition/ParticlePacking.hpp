@@ -6,6 +6,7 @@
 // tell an optional field from an absent one.
 // Reads no dictionary keys.
 #pragma once
+#include "parallel/Communicator.hpp"
 #include "particles/ParticleSet.hpp"
 #include <cstring>
 
@@ -17,6 +18,12 @@ struct ParticlePacking {
   static long fieldMask(const ParticleSet<D>& P) {
     long mask = 0, f = 0;
     P.forEachField([&](const char*, const auto& v) { mask |= long(!v.empty()) << f++; });
+    return mask;
+  }
+  // The fields present on any rank (fieldMask OR-ed over the ranks). Collective.
+  static long agreedFieldMask(const ParticleSet<D>& P) {
+    long mask = 0;
+    for (long m : Communicator::world().allGather(fieldMask(P))) mask |= m;
     return mask;
   }
   // Size the fields of the mask to the particle count (a rank that had none of them).
