@@ -119,24 +119,32 @@ int main(int argc, char** argv) {
   info(cat("Host    : ", host));
   info(cat("Date    : ", date));
   info("");
+  // An error ends the run with its status. On several ranks an error that only some ranks
+  // met (the others wait for them in a collective) stops the whole run instead, naming the
+  // rank (only rank 0 writes the log).
+  const auto fail = [](int status, const std::string& message) {
+    Log::get().error(message);
+    const auto& world = Communicator::world();
+    if (world.isParallel() && !world.everyRankFailed(30.0)) {
+      if (!world.isRoot()) std::cerr << "Error: rank " << world.rank() << ": " << message << std::endl;
+      world.abort(status);
+    }
+    return status;
+  };
   try {
     const int dimension = caseDimension(dir);
     return dimension == 3 ? runCase<3>(dir, vm.count("dryRun"), !vm.count("noFunctionObjects"))
                           : runCase<2>(dir, vm.count("dryRun"), !vm.count("noFunctionObjects"));
   } catch (const InputError& e) {
-    Log::get().error(e.what());
-    return 1;
+    return fail(1, e.what());
   } catch (const NumericalError& e) {
-    Log::get().error(e.what());
-    return 2;
+    return fail(2, e.what());
   } catch (const std::bad_alloc&) {
     // Set-up checks the memory before allocating particles (particles/MemoryCheck.hpp);
     // anything that still runs out ends here, with every time directory already written kept.
-    Log::get().error(cat("out of memory: an allocation failed in case '", dir, "'; the case needs more memory than "
-                         "the machine (or ulimit -v) gives: use a larger spacing or fewer particles"));
-    return 1;
+    return fail(1, cat("out of memory: an allocation failed in case '", dir, "'; the case needs more memory than "
+                       "the machine (or ulimit -v) gives: use a larger spacing or fewer particles"));
   } catch (const std::exception& e) {
-    Log::get().error(e.what());
-    return 1;
+    return fail(1, e.what());
   }
 }

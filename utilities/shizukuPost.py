@@ -173,11 +173,45 @@ def check_vtp_header(path):
             section = "" if closing else tag
 
 
-def read_vtp(path):
-    """(points N x 3, {point array name: values}, {field-data name: first value as float})
-    of a particles.vtp, its header checked first; InputError naming the file when it is
-    missing, corrupt or holds no particle. VTK is imported here only, so that the
-    scripts that read no particle file run without it."""
+def particle_file(time_dir):
+    """The particle file of a time directory: particles.vtp (a serial run) or particles.pvtp
+    (a run on several ranks, one piece per rank); None when it holds neither."""
+    for name in ("particles.vtp", "particles.pvtp"):
+        if os.path.isfile(os.path.join(time_dir, name)):
+            return os.path.join(time_dir, name)
+    return None
+
+
+def particle_times(case):
+    """(time, name) of the time directories of a case that hold particles, sorted."""
+    return [(t, n) for t, n in time_dirs(case) if particle_file(os.path.join(case, n))]
+
+
+def pvtp_pieces(path):
+    """The piece files of a particles.pvtp, in order: only particles_0.vtp, particles_1.vtp,
+    ... beside it are accepted (the names Shizuku writes), so a hostile Source is never
+    opened. InputError names the file."""
+    if os.path.getsize(path) > 64 << 20:
+        raise InputError(f"{path}: larger than 64 MB, which no header of pieces is")
+    with open(path, "rb") as f:
+        text = f.read().decode("utf-8", "replace")
+    if not re.search(r'<VTKFile[^>]*\btype="PPolyData"', text):
+        raise InputError(f"{path}: not a VTKFile of type PPolyData")
+    sources = re.findall(r"<Piece\b[^>]*>", text)
+    if not sources:
+        raise InputError(f"{path}: names no piece")
+    out = []
+    for k, piece in enumerate(sources):
+        m = re.search(r'\bSource="([^"]*)"', piece)
+        name = m.group(1) if m else ""
+        if name != f"particles_{k}.vtp":
+            raise InputError(f"{path}: piece {k} is '{name}', expected 'particles_{k}.vtp'")
+        out.append(os.path.join(os.path.dirname(path), name))
+    return out
+
+
+def read_one_vtp(path):
+    """read_vtp of one VTK PolyData file (a particles.vtp or one piece)."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
@@ -188,7 +222,7 @@ def read_vtp(path):
     reader.SetFileName(path)
     reader.Update()
     data = reader.GetOutput()
-    if data is None or data.GetNumberOfPoints() == 0 or data.GetPoints() is None:
+    if data is None or data.GetPoints() is None:
         raise InputError(f"{path}: no particles (missing or corrupt file)")
     points = vtk_to_numpy(data.GetPoints().GetData()).astype(float)
     fields = {}
@@ -204,6 +238,40 @@ def read_vtp(path):
                 info[a.GetName()] = float(a.GetVariantValue(0).ToDouble())
             except Exception:
                 pass
+    return points, fields, info
+
+
+def read_vtp(path):
+    """(points N x 3, {point array name: values}, {field-data name: first value as float})
+    of a particles.vtp, of a particles.pvtp (its pieces joined; the particle counts of the
+    field data summed over them) or of a time directory holding either, each file's header
+    checked first; InputError naming the file when it is missing, corrupt or holds no
+    particle. VTK is imported here only, so that the scripts that read no particle file run
+    without it."""
+    import numpy as np
+
+    if os.path.isdir(path):
+        found = particle_file(path)
+        if found is None:
+            raise InputError(f"{path}: no particles.vtp or particles.pvtp")
+        path = found
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: no such file")
+    parts = [read_one_vtp(p) for p in pvtp_pieces(path)] if path.endswith(".pvtp") else [read_one_vtp(path)]
+    points = np.concatenate([p[0] for p in parts])
+    if len(points) == 0:
+        raise InputError(f"{path}: no particles (missing or corrupt file)")
+    names = set(parts[0][1])
+    for k, p in enumerate(parts):
+        if set(p[1]) != names:
+            raise InputError(f"{path}: piece {k} holds other point arrays than piece 0")
+    fields = {n: np.concatenate([p[1][n] for p in parts]) for n in names}
+    info = dict(parts[0][2])
+    for key in ("fluidParticles", "wallParticles"):
+        if all(key in p[2] for p in parts):
+            info[key] = float(sum(p[2][key] for p in parts))
+    if all("nextId" in p[2] for p in parts):
+        info["nextId"] = max(p[2]["nextId"] for p in parts)
     return points, fields, info
 
 

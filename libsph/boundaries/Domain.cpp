@@ -1,5 +1,6 @@
 // The domain of a run: see Domain.hpp.
 #include "boundaries/Domain.hpp"
+#include "parallel/Communicator.hpp"
 #include "core/Log.hpp"
 #include "core/Parameter.hpp"
 #include <algorithm>
@@ -59,15 +60,21 @@ Domain<D> Domain<D>::read(const Dictionary& controlDict, const std::vector<WallB
     d = Domain<D>(lo, hi);
     d.describe_ = cat(box<D>(lo, hi), " (the walls' box, extended beyond each open face by its size)");
   }
-  if (dict)
-    for (std::size_t i = 0; i < p.size(); ++i)
+  if (dict) {
+    // The first fluid particle outside, of the lowest rank that holds one: every rank
+    // reports it (each holds its share of the particles).
+    std::string outside;
+    for (std::size_t i = 0; i < p.size() && outside.empty(); ++i)
       if (p.isFluid(i) && !d.contains(p.position[i])) {
         std::string where;
         for (int k = 0; k < D; ++k) where += cat(k ? " " : "", p.position[i][k]);
-        dict->error(d.side(p.position[i]).find('-') != std::string::npos ? "min" : "max",
-                    cat("the domain does not hold the fluid: particle id ", p.id[i], " at (", where,
-                        ") lies outside ", box<D>(d.min_, d.max_)));
+        outside = cat(d.side(p.position[i]).find('-') != std::string::npos ? "min" : "max",
+                      "the domain does not hold the fluid: particle id ", p.id[i], " at (", where, ") lies outside ",
+                      box<D>(d.min_, d.max_));
       }
+    outside = Communicator::world().firstMessage(outside);
+    if (!outside.empty()) dict->error(outside.substr(0, 3), outside.substr(3));
+  }
   return d;
 }
 

@@ -14,11 +14,6 @@ DomainDecomposition<D>::DomainDecomposition(const DecompositionSettings& setting
 
 template <int D>
 void DomainDecomposition<D>::start(ParticleSet<D>& P, long step) {
-  const auto& world = Communicator::world();
-  const std::size_t n = P.size(), first = n * world.rank() / world.size(), last = n * (world.rank() + 1) / world.size();
-  std::vector<std::uint8_t> outside(n, 0);
-  for (std::size_t i = 0; i < n; ++i) outside[i] = i < first || i >= last;
-  P.removeMarked(outside);
   partition(P, true);
   migrate(P);
   lastMigration_ = step;

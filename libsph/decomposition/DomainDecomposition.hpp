@@ -1,8 +1,8 @@
 // The domain decomposition of a distributed run (docs/parallel.md 3-4): which rank owns
 // which particle, moving particles to their owners, and the halo.
-//   start():       every rank holds the same whole set (generated or read); each keeps a
-//                  contiguous slice, Zoltan partitions them from scratch, and the
-//                  particles move to their owners
+//   start():       every rank holds a share of the particles (a slice of the generated
+//                  set, or the pieces of a time directory it read); Zoltan partitions them
+//                  from scratch, and the particles move to their owners
 //   distribute():  before each step's analysis: ghosts dropped; every migrationInterval
 //                  steps, particles that left the rank's region sent to the rank whose region
 //                  holds them (Zoltan's point assignment on the kept cuts), and a repartition
@@ -45,7 +45,7 @@ template <int D>
 class DomainDecomposition {
  public:
   DomainDecomposition(const DecompositionSettings& settings, double haloWidth, const PeriodicBox<D>& box);
-  // P holds the whole set on every rank; afterwards this rank's own particles. Collective.
+  // P holds this rank's share (any share); afterwards this rank's own particles. Collective.
   void start(ParticleSet<D>& P, long step);
   // Drop the ghosts, move particles to their owners when due (repartition if unbalanced),
   // build the halo. Collective.

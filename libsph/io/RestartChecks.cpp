@@ -49,12 +49,13 @@ void checkCount(const std::string& path, const char* what, std::optional<std::in
 }  // namespace
 
 template <int D>
-ParticleCounts countParticles(const ParticleSet<D>& p) {
+ParticleCounts countParticles(const ParticleSet<D>& p, std::size_t count) {
+  const auto n = long(std::min(count, p.size()));
   ParticleCounts c;
-  c.fluid = std::int64_t(p.countFluid());
-  c.wall = std::int64_t(std::count(p.type.begin(), p.type.end(), std::uint8_t(ParticleType::wall)));
+  c.fluid = std::int64_t(std::count(p.type.begin(), p.type.begin() + n, std::uint8_t(ParticleType::fluid)));
+  c.wall = std::int64_t(std::count(p.type.begin(), p.type.begin() + n, std::uint8_t(ParticleType::wall)));
   c.idLimit = p.nextId;
-  for (std::int64_t i : p.id) c.idLimit = std::max(c.idLimit, i + 1);
+  for (long i = 0; i < n; ++i) c.idLimit = std::max(c.idLimit, p.id[std::size_t(i)] + 1);
   return c;
 }
 
@@ -97,8 +98,8 @@ void checkTimeAgreement(const std::string& vtpPath, const VtpTime& vtp, const st
   same("deltaT0", vtp.deltaT0, "deltaT0", time.deltaT0);
 }
 
-template ParticleCounts countParticles<2>(const ParticleSet<2>&);
-template ParticleCounts countParticles<3>(const ParticleSet<3>&);
+template ParticleCounts countParticles<2>(const ParticleSet<2>&, std::size_t);
+template ParticleCounts countParticles<3>(const ParticleSet<3>&, std::size_t);
 template void checkParticleValues<2>(const std::string&, const ParticleSet<2>&, const ParticleCounts&);
 template void checkParticleValues<3>(const std::string&, const ParticleSet<3>&, const ParticleCounts&);
 

@@ -28,8 +28,9 @@ struct ParticleCounts {
   std::int64_t idLimit = 0;  // every id is below it
 };
 
-// The counts a writer states: fluid, wall, and one above the largest id.
-template <int D> ParticleCounts countParticles(const ParticleSet<D>& p);
+// The counts a writer states for the first `count` particles of p: fluid, wall, and one
+// above the largest id (or p.nextId).
+template <int D> ParticleCounts countParticles(const ParticleSet<D>& p, std::size_t count = std::size_t(-1));
 
 // Throws InputError "corrupt particle file '<path>': ..." naming the particle.
 template <int D> void checkParticleValues(const std::string& path, const ParticleSet<D>& p, const ParticleCounts& stated);

@@ -1,6 +1,8 @@
 // Time directories: what a run writes and a restart reads (docs/design.md 1.2, 1.3).
 //
-//   <case>/<time>/particles.vtp   every particle field (VtpFile.hpp)
+//   <case>/<time>/particles.vtp   every particle field (VtpFile.hpp); or, from a run on
+//                                 several ranks, particles.pvtp naming one piece per rank,
+//                                 particles_<k>.vtp (VtpPieces.hpp)
 //   <case>/<time>/uniform/time    time, step index, dt state (TimeFile.hpp)
 //   <case>/<time>/<field>         with ascii: one text file per field (AsciiFields.hpp)
 //   <case>/particles.pvd          the series, for ParaView (Pvd.cpp)
@@ -41,20 +43,46 @@ void writeTimeDirectory(const std::string& caseDir, const std::string& timeName,
 
 // Why <target> (a time directory's path) must not be replaced by a write, or ""
 // when it may be: it may when absent, an empty folder, or a complete time
-// directory (particles.vtp and uniform/time) holding only what Shizuku writes
-// there (uniform/time, the ascii field files). A file, a folder without both
+// directory (particles.vtp or particles.pvtp, and uniform/time) holding only what
+// Shizuku writes there (uniform/time, the pieces, the ascii field files). A file, a folder without both
 // files, or one holding a file of the user's is the user's and stays.
 std::string whyNotReplaceable(const std::string& target);
 
-// Reads <case>/<timeName> back exactly. Throws InputError naming the file on
+// Reads <case>/<timeName> back exactly. With parts > 1 only share `part` of it: of a
+// pvtp's n pieces those with n part/parts <= k < n (part+1)/parts, of a single
+// particles.vtp its particles N part/parts .. N (part+1)/parts - 1 (docs/parallel.md 7).
+// The whole of a pvtp (parts = 1) is its pieces joined, sorted by id and checked as one
+// set (ids unique over the pieces; the pieces' constants equal). Throws InputError naming the file on
 // a missing or corrupt file, one written by a run of another dimension, or
 // values a run cannot start from (VtpFile.hpp, RestartChecks.hpp), and when
 // the folder's name, uniform/time and the vtp's time fields disagree.
 template <int D>
-ParticleSet<D> readTimeDirectory(const std::string& caseDir, const std::string& timeName, TimeState& s);
+ParticleSet<D> readTimeDirectory(const std::string& caseDir, const std::string& timeName, TimeState& s,
+                                 int part = 0, int parts = 1);
 
-// Complete time directories (name parses as a number, holds particles.vtp and
-// uniform/time), sorted by time; *.tmp-* folders are ignored. A missing case
+// The particle file of a time directory: <dir>/particles.vtp, else <dir>/particles.pvtp,
+// else "".
+std::string particleFileOf(const std::string& timeDir);
+
+// A time directory written by several processes at once (docs/parallel.md 7), with the
+// atomicity of writeTimeDirectory: the root calls beginPieceWrite (the replace check,
+// <time>.tmp-<pid>/uniform made), every process writes its piece into `folder`, and the
+// root calls finishPieceWrite (particles.pvtp, uniform/time, the ascii fields when given,
+// sync, swap into place, pvd), or abandonPieceWrite after any process failed. Each throws
+// std::runtime_error naming the path.
+struct PieceWrite {
+  std::string caseDir, timeName, target, folder;
+};
+PieceWrite beginPieceWrite(const std::string& caseDir, const std::string& timeName);
+template <int D>
+void writePiece(const std::string& folder, int k, const ParticleSet<D>& p, std::size_t count, const TimeState& s);
+template <int D>
+void finishPieceWrite(const PieceWrite& w, int pieces, const ParticleSet<D>& fieldsOf, const TimeState& s,
+                      const ParticleSet<D>* ascii);
+void abandonPieceWrite(const PieceWrite& w);
+
+// Complete time directories (name parses as a number, holds particles.vtp or
+// particles.pvtp, and uniform/time), sorted by time; *.tmp-* folders are ignored. A missing case
 // folder has none.
 std::vector<std::pair<double, std::string>> listTimeDirectories(const std::string& caseDir);
 

@@ -5,6 +5,7 @@
 #include "io/TimeName.hpp"
 #include "io/VtpLayout.hpp"
 #include "particles/VtkMessages.hpp"
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -30,34 +31,35 @@ namespace shizuku {
 namespace {
 
 // A one-component VTK array of class A (whose value type is T) holding a copy of v.
+// (The first n values of each field are written: a rank's own particles, not its ghosts.)
 template <class A, class T>
-vtkSmartPointer<vtkDataArray> makeScalarArray(const char* name, const std::vector<T>& v) {
+vtkSmartPointer<vtkDataArray> makeScalarArray(const char* name, const std::vector<T>& v, std::size_t n) {
   auto a = vtkSmartPointer<A>::New();
   a->SetName(name);
   a->SetNumberOfComponents(1);
-  a->SetNumberOfTuples(vtkIdType(v.size()));
-  if (!v.empty()) std::memcpy(a->GetPointer(0), v.data(), v.size() * sizeof(T));
+  a->SetNumberOfTuples(vtkIdType(n));
+  if (n) std::memcpy(a->GetPointer(0), v.data(), n * sizeof(T));
   return a;
 }
 
-vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<double>& v) {
-  return makeScalarArray<vtkDoubleArray>(name, v);
+vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<double>& v, std::size_t n) {
+  return makeScalarArray<vtkDoubleArray>(name, v, n);
 }
-vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<std::uint8_t>& v) {
-  return makeScalarArray<vtkUnsignedCharArray>(name, v);
+vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<std::uint8_t>& v, std::size_t n) {
+  return makeScalarArray<vtkUnsignedCharArray>(name, v, n);
 }
-vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<std::int64_t>& v) {
-  return makeScalarArray<vtkTypeInt64Array>(name, v);
+vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<std::int64_t>& v, std::size_t n) {
+  return makeScalarArray<vtkTypeInt64Array>(name, v, n);
 }
 
 template <int D>
-vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<Vec<D>>& v) {
+vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<Vec<D>>& v, std::size_t count) {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
   a->SetName(name);
   a->SetNumberOfComponents(3);
-  a->SetNumberOfTuples(vtkIdType(v.size()));
+  a->SetNumberOfTuples(vtkIdType(count));
   double* x = a->GetPointer(0);
-  const long n = long(v.size());
+  const long n = long(count);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i)
     for (int k = 0; k < 3; ++k) x[3 * i + k] = k < D ? v[i][k] : 0.0;
@@ -205,12 +207,13 @@ vtkSmartPointer<vtkPolyData> readPolyData(const std::string& path, const VtpLayo
 }  // namespace
 
 template <int D>
-void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState& s) {
-  const vtkIdType n = vtkIdType(p.size());
+void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState& s, std::size_t count) {
+  const std::size_t first = std::min(count, p.size());
+  const vtkIdType n = vtkIdType(first);
   vtkNew<vtkPolyData> pd;
 
   vtkNew<vtkPoints> points;
-  points->SetData(makeArray<D>("position", p.position));
+  points->SetData(makeArray<D>("position", p.position, first));
   pd->SetPoints(points);
 
   vtkNew<vtkTypeInt64Array> offsets, connectivity;
@@ -230,10 +233,10 @@ void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState&
 
   p.forEachField([&](const char* name, const auto& v) {
     if (v.empty() && !ParticleSet<D>::isMandatory(name)) return;
-    if (vtkIdType(v.size()) != n)
+    if (v.size() != p.size())
       throw std::runtime_error("cannot write '" + path + "': field '" + name + "' has " +
-                               std::to_string(v.size()) + " values for " + std::to_string(n) + " particles");
-    pd->GetPointData()->AddArray(makeArray(name, v));
+                               std::to_string(v.size()) + " values for " + std::to_string(p.size()) + " particles");
+    pd->GetPointData()->AddArray(makeArray(name, v, first));
   });
 
   vtkFieldData* fd = pd->GetFieldData();
@@ -247,7 +250,7 @@ void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState&
   addFieldValue(fd, "timeIndex", std::int64_t(s.step));
   addFieldValue(fd, "deltaT", s.deltaT);
   addFieldValue(fd, "deltaT0", s.deltaT0);
-  const ParticleCounts c = countParticles(p);
+  const ParticleCounts c = countParticles(p, first);
   addFieldValue(fd, "fluidParticles", *c.fluid);
   addFieldValue(fd, "wallParticles", *c.wall);
   addFieldValue(fd, "nextId", c.idLimit);
@@ -326,8 +329,8 @@ ParticleSet<D> readVtp(const std::string& path, VtpTime* t) {
   return p;
 }
 
-template void writeVtp<2>(const std::string&, const ParticleSet<2>&, const TimeState&);
-template void writeVtp<3>(const std::string&, const ParticleSet<3>&, const TimeState&);
+template void writeVtp<2>(const std::string&, const ParticleSet<2>&, const TimeState&, std::size_t);
+template void writeVtp<3>(const std::string&, const ParticleSet<3>&, const TimeState&, std::size_t);
 template ParticleSet<2> readVtp<2>(const std::string&, VtpTime*);
 template ParticleSet<3> readVtp<3>(const std::string&, VtpTime*);
 

@@ -25,8 +25,11 @@ struct VtpTime {
   std::optional<long> step;
 };
 
-// Throws std::runtime_error naming the file on any write failure.
-template <int D> void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState& s);
+// The first `count` particles of p (all by default; a rank writes its own, not its
+// ghosts). Throws std::runtime_error naming the file on any write failure.
+template <int D>
+void writeVtp(const std::string& path, const ParticleSet<D>& p, const TimeState& s,
+              std::size_t count = std::size_t(-1));
 // Throws InputError naming the file if it is missing, corrupt, of another
 // dimension, or holds values a run cannot start from. If `t` is non-null,
 // the time state kept in the field data is stored there.

@@ -1,10 +1,12 @@
 // The set-up of a simulation from its case directory: see CaseSetup.hpp.
 #include "isph/CaseSetup.hpp"
 #include "core/Parameter.hpp"
+#include "decomposition/DistributedTimeDirectory.hpp"
 #include "effects/PhysicalProperties.hpp"
 #include "kernels/KernelParameters.hpp"
 #include "io/TimeDirectory.hpp"
 #include "io/TimeName.hpp"
+#include "parallel/Communicator.hpp"
 #include "particles/ParticleGenerator.hpp"
 #include <cmath>
 
@@ -87,14 +89,18 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
   }
   if (!startName.empty()) {
     TimeState ts;
-    s.particles = readTimeDirectory<D>(files.dir, startName, ts);
+    // On several ranks each reads its share (the pieces of a parallel run's time).
+    s.particles = Communicator::world().isParallel() ? readDistributedShare<D>(files.dir, startName, ts)
+                                                     : readTimeDirectory<D>(files.dir, startName, ts);
     s.time = ts.time;
     s.step = ts.step;
     s.dt = ts.deltaT;
     s.balance = ts.balance;
   } else {
     s.particles = std::move(gen.set);
-    s.particles.rho0 = s.rho0;
+    const auto& world = Communicator::world();
+    const std::size_t n = s.particles.size(), part = std::size_t(world.rank()), parts = std::size_t(world.size());
+    s.particles.keepRange(n * part / parts, n * (part + 1) / parts);  // this rank's share    s.particles.rho0 = s.rho0;
     s.particles.spacing = s.d0;
     // Mass calibrated on the initial lattice so that <rho> = rho there (docs/method.md 2).
     s.particles.mass = s.rho0 / s.kernel.latticeSum(s.d0);
@@ -118,7 +124,8 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
   P.surface.resize(n);
   P.pressure.resize(n);
   s.refreshTypeMasks();
-  if (P.countFluid() == 0) files.particlesDict.error("regions", "the case has no fluid particles");
+  if (Communicator::world().sum(long(P.countFluid())) == 0)  // every rank's share
+    files.particlesDict.error("regions", "the case has no fluid particles");
   s.uStar.resize(n);
   s.acceleration.resize(n);
   return startName;

@@ -50,8 +50,13 @@ HealthGuard<D>::HealthGuard(const Dictionary& controlDict) {
 template <int D>
 void HealthGuard<D>::setLimits(const FlowState<D>& s, const Vec<D>& g) {
   const auto& P = s.particles;
-  Vec<D> lo = P.position[0], hi = P.position[0];
+  const auto& world = Communicator::world();  // every rank's particles
+  Vec<D> lo = Vec<D>::Constant(INFINITY), hi = Vec<D>::Constant(-INFINITY);
   for (const auto& x : P.position) { lo = lo.cwiseMin(x); hi = hi.cwiseMax(x); }
+  for (int k = 0; k < D; ++k) {
+    lo[k] = world.min(lo[k]);
+    hi[k] = world.max(hi[k]);
+  }
   const Vec<D> ext = (hi - lo).cwiseMax(Vec<D>::Constant(s.d0));
   // No flow of this case can exceed ten times the larger of its starting speed and the
   // free-fall speed over the largest extent of the domain.
@@ -59,6 +64,7 @@ void HealthGuard<D>::setLimits(const FlowState<D>& s, const Vec<D>& g) {
     double u0 = 0;
     for (std::size_t i = 0; i < P.size(); ++i)
       if (P.isFluid(i)) u0 = std::max(u0, P.velocity[i].norm());
+    u0 = world.max(u0);
     const double fall = std::sqrt(2 * g.norm() * ext.maxCoeff());
     limits_.maxSpeed = std::max(u0, fall) > 0 ? 10 * std::max(u0, fall) : INFINITY;
   }

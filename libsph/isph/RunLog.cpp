@@ -1,5 +1,6 @@
 // The progress line and the closing summary of a run: see RunLog.hpp.
 #include "isph/RunLog.hpp"
+#include "io/TimeDirectory.hpp"
 #include "core/Log.hpp"
 #include <cmath>
 #include <iomanip>
@@ -46,7 +47,10 @@ std::vector<std::string> summaryLines(const RunSummary& r, const StageTimers& ti
   if (r.ppeFallbacks > 0)
     v.push_back(cat("PPE: the iterative solver fell back to a direct LU in ", r.ppeFallbacks, " steps"));
   v.push_back("Files written:");
-  for (const auto& w : r.written) v.push_back("  " + r.caseDir + "/" + w + "/particles.vtp");
+  for (const auto& w : r.written) {
+    const std::string file = particleFileOf(r.caseDir + "/" + w);
+    v.push_back("  " + (file.empty() ? r.caseDir + "/" + w : file));
+  }
   if (!r.written.empty()) v.push_back("  " + r.caseDir + "/particles.pvd");
   if (r.functionObjects) v.push_back("  " + r.caseDir + "/postProcessing/ (function objects)");
   return v;

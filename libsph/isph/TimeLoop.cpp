@@ -6,7 +6,7 @@
 #include "isph/RunLog.hpp"
 #include "isph/StopRequests.hpp"
 #include "isph/TimeStepFloor.hpp"
-#include "decomposition/ParticleGather.hpp"
+#include "decomposition/DistributedTimeDirectory.hpp"
 #include "parallel/Communicator.hpp"
 #include <chrono>
 #include <cmath>
@@ -85,20 +85,6 @@ static FluidBalance globalBalance(const FluidBalance& mine) {
   return b;
 }
 
-// Report an error met by this rank (rank 0's log is the only one shown, so the rank is
-// named) and stop every rank with exit status 1.
-[[noreturn]] static void stopAllRanks(std::exception_ptr error) {
-  const auto& world = Communicator::world();
-  try {
-    std::rethrow_exception(error);
-  } catch (const std::exception& e) {
-    std::cerr << "Error: rank " << world.rank() << ": " << e.what() << std::endl;
-  } catch (...) {
-    std::cerr << "Error: rank " << world.rank() << ": unknown error" << std::endl;
-  }
-  world.abort(1);
-}
-
 // Fluid particles of every rank (this rank's own, summed).
 template <int D>
 double TimeLoop<D>::fluidCount() const {
@@ -120,19 +106,9 @@ void TimeLoop<D>::writeTime(const std::string& reason) {
   const std::string name = timeName(s_.time);
   const auto& world = Communicator::world();
   if (world.isParallel()) {
-    // Rank 0 writes every rank's particles in the serial format; a failure stops all ranks.
-    const ParticleSet<D> whole = gatherParticles(s_.particles, s_.numOwned());
+    // Each rank writes its own particles as a piece; a failure on any stops all ranks.
     ts.balance = globalBalance(s_.balance);
-    std::string failure;
-    if (world.isRoot()) {
-      try {
-        writeTimeDirectory<D>(files_.dir, name, whole, ts, rc_.ascii);
-      } catch (const std::exception& e) {
-        failure = e.what();
-      }
-    }
-    failure = world.firstMessage(failure);
-    if (!failure.empty()) throw std::runtime_error(failure);
+    writeDistributedTime<D>(files_.dir, name, s_.particles, s_.numOwned(), ts, rc_.ascii);
   } else {
     writeTimeDirectory<D>(files_.dir, name, s_.particles, ts, rc_.ascii);
   }
@@ -159,7 +135,7 @@ void TimeLoop<D>::runFunctionObjects(bool isWriteTime, double wall, double parti
 template <int D>
 void TimeLoop<D>::start() {
   const bool freshStart = listTimeDirectories(files_.dir).empty() ||
-                          !fs::exists(files_.dir + "/" + startTimeName_ + "/particles.vtp");
+                          particleFileOf(files_.dir + "/" + startTimeName_).empty();
   info(cat("Starting at time ", s_.time, " (", startTimeName_, "), step ", s_.step, freshStart ? ", from particlesDict" : ""));
   RunInfo startInfo;
   startInfo.caseDir = files_.dir;
@@ -286,10 +262,9 @@ int TimeLoop<D>::run(const std::string& pipeline) {
   } catch (...) {
     // A write error (full disk, unwritable case): close the function-object files,
     // then let the caller report it (exit 1); nothing written before is touched.
+    // On several ranks an error of this rank's alone (its file) stops the whole run
+    // (solver/shizuku.cpp: the ranks that did not meet it wait elsewhere).
     for (auto& f : functionObjects_) f->end();
-    // On several ranks the error may be this rank's alone (its file): it says so and
-    // stops every rank, which would otherwise wait for it.
-    if (Communicator::world().isParallel()) stopAllRanks(std::current_exception());
     throw;
   }
   for (auto& f : functionObjects_) f->end();

@@ -1,5 +1,6 @@
 // Collective operations across ranks: see Communicator.hpp.
 #include "parallel/Communicator.hpp"
+#include <unistd.h>
 #include <cstdlib>
 #include <numeric>
 #include <stdexcept>
@@ -66,6 +67,10 @@ template <class T> T reduce(T x, MPI_Op op, bool started) {
 }
 }  // namespace
 
+// A communicator of its own for the failure barrier (everyRankFailed), so that it never
+// matches a collective of the solver's on MPI_COMM_WORLD.
+static MPI_Comm failureComm = MPI_COMM_NULL;
+
 void Communicator::start(int* argc, char*** argv) {
   if (started_) return;
   int initialised = 0, provided = 0;
@@ -76,7 +81,21 @@ void Communicator::start(int* argc, char*** argv) {
   }
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  MPI_Comm_dup(MPI_COMM_WORLD, &failureComm);
   started_ = true;
+}
+
+bool Communicator::everyRankFailed(double seconds) const {
+  if (!started_) return true;
+  MPI_Request request;
+  MPI_Ibarrier(failureComm, &request);
+  const double end = MPI_Wtime() + seconds;
+  int done = 0;
+  while (!done && MPI_Wtime() < end) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (!done) ::usleep(2000);
+  }
+  return done != 0;
 }
 
 double Communicator::sum(double x) const { return reduce(x, MPI_SUM, started_); }
@@ -189,6 +208,15 @@ std::string Communicator::firstMessage(const std::string& mine) const {
   return text;
 }
 
+std::string Communicator::broadcast(const std::string& fromRoot) const {
+  if (!started_) return fromRoot;
+  long length = long(fromRoot.size());
+  MPI_Bcast(&length, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+  std::string text = isRoot() ? fromRoot : std::string(std::size_t(length), ' ');
+  MPI_Bcast(text.data(), int(text.size()), MPI_CHAR, 0, MPI_COMM_WORLD);
+  return text;
+}
+
 void Communicator::abort(int status) const {
   if (started_) MPI_Abort(MPI_COMM_WORLD, status);
   std::exit(status);
@@ -216,6 +244,8 @@ void Communicator::exchange(const std::vector<int>&, const std::vector<const cha
                             const std::vector<char*>&, const std::vector<long>&, int) const {}
 void Communicator::barrier() const {}
 std::string Communicator::firstMessage(const std::string& mine) const { return mine; }
+std::string Communicator::broadcast(const std::string& fromRoot) const { return fromRoot; }
+bool Communicator::everyRankFailed(double) const { return true; }
 void Communicator::abort(int status) const { std::exit(status); }
 
 #endif

@@ -53,7 +53,13 @@ class Communicator {
   // The message of the lowest rank whose message is not empty ("" when all are): a
   // failure one rank found, made every rank's, so that all stop together. Collective.
   std::string firstMessage(const std::string& mine) const;
+  // Rank 0's text on every rank. Collective.
+  std::string broadcast(const std::string& fromRoot) const;
   void barrier() const;
+  // Called by a rank that met an error it cannot go on from: true when every rank called
+  // it within `seconds` (the error was met by all, which then exit together), false when
+  // some rank did not (it waits elsewhere, and only abort() stops the run).
+  bool everyRankFailed(double seconds) const;
   // Stop every rank at once (a rank that cannot go on while the others wait).
   [[noreturn]] void abort(int status) const;
 

@@ -6,6 +6,7 @@
 #pragma once
 #include "core/types.hpp"
 #include <cstddef>
+#include <type_traits>
 
 namespace shizuku {
 
@@ -46,6 +47,20 @@ struct ParticleSet {
         [&](const char* n, auto& v) { f(n, static_cast<const std::decay_t<decltype(v)>&>(v)); });
   }
 
+  // Visit every field of this set with the same field of o, as (vector&, const vector&).
+  template <class F> void forEachFieldWith(const ParticleSet& o, F&& f) {
+    int k = 0;
+    forEachField([&](const char*, auto& v) {
+      int j = 0;
+      o.forEachField([&](const char*, const auto& w) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::decay_t<decltype(w)>>)
+          if (j == k) f(v, w);
+        ++j;
+      });
+      ++k;
+    });
+  }
+
   // Resize all present fields (and the mandatory ones) to n.
   void resize(std::size_t n) {
     position.resize(n);
@@ -75,6 +90,34 @@ struct ParticleSet {
       if (v.size() + 1 == position.size()) v.push_back(v[i]);
     });
     return position.size() - 1;
+  }
+  // Reorder: particle k becomes the old particle order[k] (every present field; a copy
+  // of each field is made, so not for the time loop).
+  template <class I> void permute(const std::vector<I>& order) {
+    auto apply = [&](auto& v) {
+      if (v.size() != order.size()) return;
+      const auto copy = v;
+      for (std::size_t k = 0; k < order.size(); ++k) v[k] = copy[std::size_t(order[k])];
+    };
+    apply(position);
+    forEachField([&](const char*, auto& v) { apply(v); });
+  }
+  // Keep particles first .. last - 1 alone.
+  void keepRange(std::size_t first, std::size_t last) {
+    std::vector<std::uint8_t> outside(size(), 0);
+    for (std::size_t i = 0; i < size(); ++i) outside[i] = i < first || i >= last;
+    removeMarked(outside);
+  }
+  // Append every particle of o, keeping its fields' order. False (nothing appended) when
+  // both sets hold particles and a field is present in one and absent in the other.
+  bool append(const ParticleSet& o) {
+    const std::size_t n = size(), m = o.size();
+    bool agree = true;
+    forEachFieldWith(o, [&](auto& v, const auto& w) { agree = agree && (n == 0 || m == 0 || v.empty() == w.empty()); });
+    if (!agree) return false;
+    position.insert(position.end(), o.position.begin(), o.position.end());
+    forEachFieldWith(o, [&](auto& v, const auto& w) { v.insert(v.end(), w.begin(), w.end()); });
+    return true;
   }
   static bool isMandatory(const std::string& name) {
     return name == "U" || name == "p" || name == "rhoN" || name == "type" || name == "surface" || name == "id";

@@ -195,7 +195,7 @@ def run_case(a, name, base, start, end, write, d0, functions=False):
         rc = parallel(a, case, ranks, functions=functions)
         if not st.check(rc == 0, f"{name} on {ranks} rank(s) ran (exit {rc}; log {case}/log.parallel)"):
             continue
-        compare(name, os.path.join(ref, last, "particles.vtp"), os.path.join(case, last, "particles.vtp"), ranks, d0)
+        compare(name, os.path.join(ref, last), os.path.join(case, last), ranks, d0)
         if functions and ranks > 1:
             compare_post(name, ref, case, ranks)
 

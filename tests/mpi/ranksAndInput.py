@@ -7,11 +7,15 @@ the dam-break tutorial run without function objects:
     file, the line and the keyword it misspells, nothing written;
   - SIGTERM sent to every rank (what a batch system's cancel does) in the middle of a run:
     exit 0, one time directory written at the step all ranks stopped at, holding every
-    particle exactly once;
+    particle exactly once: particles.pvtp naming particles_0.vtp and particles_1.vtp, one
+    non-empty piece per rank, listed in particles.pvd;
   - `stopAt writeNow` written into system/controlDict while two ranks run: the same;
-  - a restart across rank counts: 20 steps on 2 ranks, 20 more on 3 from the time written,
-    20 more on 1 (serial): equal to one serial run of 60 steps within compareWithSerial.py's
-    bounds (pressure solved to 1e-11, as there);
+  - a folder of the user's (holding notes.txt) where a time is due, two ranks: exit 1, one
+    error naming it, the folder as it was, no temporary folder left;
+  - a restart across rank counts: 20 steps on 2 ranks (their time written in two pieces),
+    20 more on 3 from the time written (three ranks reading two pieces), 20 more on 1
+    (serial, reading three): equal to one serial run of 60 steps within
+    compareWithSerial.py's bounds (pressure solved to 1e-11, as there);
   - five ranks, one of which holds no fluid at all (the tank's upper walls): 20 steps equal
     to the serial run within the same bounds.
 
@@ -81,11 +85,28 @@ def check_stop(name, case, rc, text, ranks_total):
     st.check(rc == 0, f"{name}: exit status {rc} (0 expected)")
     new = [t for t in times if t != "0"]
     if st.check(len(new) == 1, f"{name}: one time directory written after the start ({new})"):
-        data = st.read_vtp(os.path.join(case, new[0], "particles.vtp"))
+        data = st.read_vtp(os.path.join(case, new[0]))
         import numpy as np
         ids = data["id"] if data is not None else np.array([])
         st.check(len(ids) == ranks_total and len(np.unique(ids)) == ranks_total,
                  f"{name}: time {new[0]} holds every particle once ({len(ids)} of {ranks_total})")
+        check_pieces(name, case, new[0], 2)
+
+
+def check_pieces(name, case, time_name, ranks):
+    """The time directory holds particles.pvtp naming one non-empty piece per rank, and the
+    series lists the pvtp (docs/parallel.md 7)."""
+    folder = os.path.join(case, time_name)
+    pieces = sorted(n for n in os.listdir(folder) if n.startswith("particles_"))
+    sizes = [len(st.read_vtp(os.path.join(folder, n))["id"]) for n in pieces]
+    with open(os.path.join(folder, "particles.pvtp")) as f:
+        sources = re.findall(r'Source="([^"]*)"', f.read())
+    with open(os.path.join(case, "particles.pvd")) as f:
+        listed = f'file="{time_name}/particles.pvtp"' in f.read()
+    st.check(sources == [f"particles_{k}.vtp" for k in range(ranks)] and sorted(sources) == pieces and
+             all(n > 0 for n in sizes) and listed and not os.path.exists(os.path.join(folder, "particles.vtp")),
+             f"{name}: {time_name}/particles.pvtp names one piece per rank ({sources}; particles {sizes}), "
+             f"listed in particles.pvd")
 
 
 def main():
@@ -129,6 +150,20 @@ def main():
     case, rc, text = stopped_run(a, "writeNow", write_now)
     check_stop("stopAt writeNow on two ranks", case, rc, text, whole)
 
+    # A folder of the user's where a time is due: every rank stops, one error, the folder kept.
+    case = fresh(a, "inTheWay", end=0.004, write=0.002)
+    os.makedirs(os.path.join(case, "0.002"))
+    with open(os.path.join(case, "0.002", "notes.txt"), "w") as f:
+        f.write("mine")
+    r = subprocess.run(launch(a, case, 2), capture_output=True, text=True)
+    errs = errors(r.stdout + r.stderr)
+    st.check(r.returncode == 1 and len(errs) == 1 and "0.002" in errs[0] and "move it away" in errs[0],
+             f"a user's folder where a time is due, two ranks: exit {r.returncode} (1 expected), one error {errs}")
+    st.check(os.listdir(os.path.join(case, "0.002")) == ["notes.txt"] and written(case) == ["0"] and
+             not any(".tmp-" in n for n in os.listdir(case)),
+             f"a user's folder where a time is due: kept as it was, time 0 complete, no temporary left "
+             f"({sorted(os.listdir(case))})")
+
     # Restart 2 -> 3 -> 1 ranks: each leg starts from the time the last one wrote.
     ref = fresh(a, "restartSerial", end=0.006, write=0.002)
     compare.tighten(ref)
@@ -140,12 +175,14 @@ def main():
         legs.append(compare.parallel(a, got, ranks) if ranks > 1 else compare.serial(a, got))
         with open(os.path.join(got, "log.parallel" if ranks > 1 else "log.serial")) as f:
             legs[-1] = (legs[-1], re.search(r"^Starting at time (\S+)", f.read(), re.M))
+        if ranks == 2:
+            check_pieces("restart, 2 ranks", got, "0.002", 2)
     starts = [m.group(1) if m else None for _, m in legs]
     rs = compare.serial(a, ref)
     if st.check(rs == 0 and all(rc == 0 for rc, _ in legs) and starts == ["0", "0.002", "0.004"],
                 f"restart 2 -> 3 -> 1 ranks: each leg ran from the last one's time (starts {starts})"):
-        compare.compare("restart 2 -> 3 -> 1 ranks, against serial", os.path.join(ref, "0.006", "particles.vtp"),
-                        os.path.join(got, "0.006", "particles.vtp"), 3, 0.01)
+        compare.compare("restart 2 -> 3 -> 1 ranks, against serial", os.path.join(ref, "0.006"),
+                        os.path.join(got, "0.006"), 3, 0.01)
 
     ref = fresh(a, "fiveSerial")
     got = fresh(a, "fiveRanks")
@@ -157,8 +194,8 @@ def main():
         with open(os.path.join(got, "log.parallel")) as f:
             line = next((x for x in f if x.startswith("Decomposition:")), "")
         st.check("(0 fluid" in line, f"five ranks: one rank holds no fluid ({line.strip()})")
-        compare.compare("damBreak from the start", os.path.join(ref, "0.002", "particles.vtp"),
-                        os.path.join(got, "0.002", "particles.vtp"), 5, 0.01)
+        compare.compare("damBreak from the start", os.path.join(ref, "0.002"),
+                        os.path.join(got, "0.002"), 5, 0.01)
     sys.exit(st.summary())
 
 

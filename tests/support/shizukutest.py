@@ -226,26 +226,40 @@ def run_or_fail(shizuku, case, threads, what):
 
 # --- particle files and time directories ------------------------------------------------
 
+def particle_file(time_dir):
+    """The particle file of a time directory: particles.vtp (a serial run) or particles.pvtp
+    (a run on several ranks: one piece per rank, docs/parallel.md 7); None when neither."""
+    for name in ("particles.vtp", "particles.pvtp"):
+        if os.path.isfile(os.path.join(time_dir, name)):
+            return os.path.join(time_dir, name)
+    return None
+
+
 def time_dirs(case):
-    """(time, name) of the time directories of a case holding particles.vtp, sorted by time."""
+    """(time, name) of the time directories of a case holding particles, sorted by time."""
     out = []
     for name in os.listdir(case):
         try:
             t = float(name)
         except ValueError:
             continue
-        if os.path.isfile(os.path.join(case, name, "particles.vtp")):
+        if particle_file(os.path.join(case, name)):
             out.append((t, name))
     return sorted(out)
 
 
 def read_vtp(path):
-    """A particles.vtp read by VTK: {"position": N x 3, point array name: values,
+    """The particles of a particles.vtp, a particles.pvtp (all its pieces) or a time
+    directory holding either, read by VTK: {"position": N x 3, point array name: values,
     "field:" + field array name: values} (numpy copies); None when VTK finds no points."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPPolyDataReader
 
-    r = vtkXMLPolyDataReader()
+    if os.path.isdir(path):
+        path = particle_file(path)
+        if path is None:
+            return None
+    r = vtkXMLPPolyDataReader() if path.endswith(".pvtp") else vtkXMLPolyDataReader()
     r.SetFileName(path)
     r.Update()
     poly = r.GetOutput()

@@ -1,0 +1,133 @@
+// Pieces of a time directory, one per rank: see DistributedTimeDirectory.hpp.
+#include "decomposition/DistributedTimeDirectory.hpp"
+#include "decomposition/ParticleGather.hpp"
+#include "decomposition/ParticlePacking.hpp"
+#include "parallel/Communicator.hpp"
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+namespace shizuku {
+
+namespace {
+
+// Run `work` on every rank; if it threw on any, every rank throws the lowest such rank's
+// message (as E, InputError or std::runtime_error).
+template <class E, class F>
+void agreeOn(F&& work) {
+  std::string failure;
+  try {
+    work();
+  } catch (const std::exception& e) {
+    failure = e.what();
+    if (failure.empty()) failure = "failed";
+  }
+  failure = Communicator::world().firstMessage(failure);
+  if (!failure.empty()) throw E(failure);
+}
+
+// "" when every id of every rank's `ids` is held once; else which id is held twice.
+// Each id goes to rank id mod size, which looks for repeats among what it receives.
+std::string repeatedId(const std::vector<std::int64_t>& ids) {
+  const auto& world = Communicator::world();
+  const int nranks = world.size(), me = world.rank();
+  std::vector<long> count(std::size_t(nranks), 0);
+  for (std::int64_t id : ids) ++count[std::size_t(id % nranks)];
+  std::vector<long> start(std::size_t(nranks) + 1, 0);
+  for (int r = 0; r < nranks; ++r) start[std::size_t(r) + 1] = start[std::size_t(r)] + count[std::size_t(r)];
+  std::vector<std::int64_t> send(ids.size());
+  std::vector<long> fill(start.begin(), start.end() - 1);
+  for (std::int64_t id : ids) send[std::size_t(fill[std::size_t(id % nranks)]++)] = id;
+  const std::vector<long> recvCount = world.exchangeCounts(count);
+  long total = 0;
+  for (long c : recvCount) total += c;
+  std::vector<std::int64_t> mine(static_cast<std::size_t>(total));
+  std::vector<int> ranks;
+  std::vector<const char*> sendPtr;
+  std::vector<char*> recvPtr;
+  std::vector<long> sendBytes, recvBytes;
+  long at = 0;
+  for (int r = 0; r < nranks; ++r) {
+    const std::size_t k = std::size_t(r);
+    if (r == me) {
+      std::copy(send.begin() + start[k], send.begin() + start[k + 1], mine.begin() + at);
+    } else if (count[k] > 0 || recvCount[k] > 0) {
+      ranks.push_back(r);
+      sendPtr.push_back(reinterpret_cast<const char*>(send.data() + start[k]));
+      sendBytes.push_back(count[k] * long(sizeof(std::int64_t)));
+      recvPtr.push_back(reinterpret_cast<char*>(mine.data() + at));
+      recvBytes.push_back(recvCount[k] * long(sizeof(std::int64_t)));
+    }
+    at += recvCount[k];
+  }
+  world.exchange(ranks, sendPtr, sendBytes, recvPtr, recvBytes, 17);
+  std::sort(mine.begin(), mine.end());
+  const auto twice = std::adjacent_find(mine.begin(), mine.end());
+  return world.firstMessage(twice == mine.end() ? "" : "particle id " + std::to_string(*twice) + " is held twice");
+}
+
+}  // namespace
+
+template <int D>
+void writeDistributedTime(const std::string& caseDir, const std::string& timeName, ParticleSet<D>& P,
+                          std::size_t owned, const TimeState& s, bool ascii) {
+  const auto& world = Communicator::world();
+  ParticlePacking<D>::ensureFields(P, ParticlePacking<D>::agreedFieldMask(P));
+  // Rank 0 first: the replace check and the folder, or its error on every rank.
+  PieceWrite w;
+  agreeOn<std::runtime_error>([&] {
+    if (world.isRoot()) w = beginPieceWrite(caseDir, timeName);
+  });
+  w.folder = world.broadcast(w.folder);
+  std::string failure;
+  try {
+    writePiece<D>(w.folder, world.rank(), P, owned, s);
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
+  failure = world.firstMessage(failure);
+  // Gathered for the ascii files only (every rank takes part while rank 0 collects).
+  const ParticleSet<D> whole = failure.empty() && ascii ? gatherParticles(P, owned) : ParticleSet<D>();
+  if (world.isRoot()) {
+    if (!failure.empty()) {
+      abandonPieceWrite(w);
+    } else {
+      try {
+        finishPieceWrite<D>(w, world.size(), P, s, ascii ? &whole : nullptr);
+      } catch (const std::exception& e) {
+        failure = e.what();
+      }
+    }
+  }
+  failure = world.firstMessage(failure);
+  if (!failure.empty()) throw std::runtime_error(failure);
+}
+
+template <int D>
+ParticleSet<D> readDistributedShare(const std::string& caseDir, const std::string& timeName, TimeState& s) {
+  const auto& world = Communicator::world();
+  ParticleSet<D> P;
+  agreeOn<InputError>([&] { P = readTimeDirectory<D>(caseDir, timeName, s, world.rank(), world.size()); });
+  // A rank that read no piece takes the constants from those that did; they must agree.
+  const bool has = P.spacing > 0;
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::string where = "time directory '" + caseDir + "/" + timeName + "'";
+  for (double* c : {&P.mass, &P.rho0, &P.spacing}) {
+    const double hi = world.max(has ? *c : -inf), lo = world.min(has ? *c : inf);
+    if (hi != lo) throw InputError(where + ": its pieces disagree on the particle mass, rho0 or spacing");
+    *c = hi;
+  }
+  P.nextId = world.max(long(P.nextId));
+  if (const std::string twice = repeatedId(P.id); !twice.empty())
+    throw InputError(where + ": " + twice + " (by two of its pieces)");
+  return P;
+}
+
+template void writeDistributedTime<2>(const std::string&, const std::string&, ParticleSet<2>&, std::size_t,
+                                      const TimeState&, bool);
+template void writeDistributedTime<3>(const std::string&, const std::string&, ParticleSet<3>&, std::size_t,
+                                      const TimeState&, bool);
+template ParticleSet<2> readDistributedShare<2>(const std::string&, const std::string&, TimeState&);
+template ParticleSet<3> readDistributedShare<3>(const std::string&, const std::string&, TimeState&);
+
+}  // namespace shizuku

@@ -1,0 +1,151 @@
+#!/usr/bin/python3
+"""The 3D dam break (SPHERIC Test 2, tutorials/damBreak3D) on two ranks to its end, against
+the spread of serial runs (docs/parallel.md 8; ctest long.mpiDamBreak3D).
+
+usage: damBreak3DRanks.py SOURCE WORK --shizuku BIN --mpirun "mpirun --allow-run-as-root
+                          --oversubscribe" [--spacing 0.05] [--end 2.5] [--reuse]
+(--reuse: a run whose folder in WORK already reached the end is measured, not run again.)
+
+1. The first 50 steps (fixed dt 1e-3 s, pressure solved to 1e-11): serial on one thread and
+   two ranks of one thread, the particles compared by id with mpi.compareWithSerial's bounds
+   (1e-8 d0, 1e-8 max|U|, 1e-8 max|p|).
+2. The tutorial as it is (adjustable dt, its pressure tolerance) to its end (2.5 s): serial
+   on one and on two threads, and two ranks of one thread. After the impact on the box the
+   serial runs themselves part: two threads add the same sums in another order, and the
+   round-off grows through the breaking waves. Each measure m below is asserted within the
+   band the serial runs span, widened by their own distance,
+       [min(m1, m2) - s, max(m1, m2) + s],  s = max(|m1 - m2|, resolution),
+   where the resolution is what the measure can resolve (the gauges' 5 ms sampling for
+   arrival times; none for the rest). The measures:
+     - the surge front: the smallest fluid x (function object `front`) at t = 0.2, 0.3 and
+       0.4 s, before the water reaches the box (x = 0.8245 m), and the time it passes
+       x = 1.5 m;
+     - eq. 22's interior density-error mode, the mean over the run's samples;
+     - wall pressure: the filtered P1 and P3 (100 Hz, the tutorial's sensors): arrival (first
+       p > 500 Pa), peak, and the mean over 0.5-2.5 s (the quasi-static load behind the impact);
+     - the heights at H2 and H4: arrival at H2 (first h > 2 cm) and the rms difference from
+       the experiment over the run (spheric2Measures.py).
+It prints each measure for the three runs and the experiment's value where there is one.
+"""
+import os
+import shlex
+import subprocess
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "support"))
+import shizukutest as st  # noqa: E402
+
+cws = st.load_module(os.path.join(HERE, "compareWithSerial.py"), "compareWithSerial")
+
+
+def run(cmd, case, log):
+    with open(os.path.join(case, log), "w") as f:
+        return subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT).returncode
+
+
+def make_case(a, name, spacing, end, tight=False):
+    case = os.path.join(a.work, name)
+    st.copy_case(os.path.join(a.source, "tutorials", "damBreak3D"), case)
+    st.set_key(os.path.join(case, "system", "particlesDict"), "spacing", str(spacing))
+    control = os.path.join(case, "system", "controlDict")
+    st.set_key(control, "endTime", str(end))
+    if tight:
+        st.set_key(control, "adjustTimeStep", "no")
+        st.set_key(control, "writeInterval", str(end))
+        cws.tighten(case)
+    return case
+
+
+def serial(a, case, threads):
+    return run([a.shizuku, "-case", case, "-threads", str(threads)], case, "log.run")
+
+
+def ranks(a, case, n):
+    return run(shlex.split(a.mpirun) + ["-np", str(n), a.shizuku, "-case", case, "-threads", "1", "-parallel"],
+               case, "log.run")
+
+
+def front(case):
+    """(times, smallest fluid x) from the `front` function object."""
+    rows = np.array(cws.numbers(os.path.join(case, "postProcessing", "front", "0", "extent.dat")))
+    return rows[:, 0], rows[:, 1]
+
+
+def mode(case):
+    rows = st.read_table(os.path.join(case, "postProcessing", "densityError", "0", "densityError.dat"))
+    return float(np.mean([r["mode"] for r in rows]))
+
+
+def measures(case, measure_module, exp, end):
+    run_ = measure_module.read_run(case)
+    m = measure_module.measures(run_, exp, end)
+    out = {}
+    t, x = front(case)
+    for at in (0.2, 0.3, 0.4):
+        out[f"front x at {at} s (m)"] = (float(np.interp(at, t, x)), None, 0.0)
+    passed = np.nonzero(x < 1.5)[0]
+    out["front passes x = 1.5 m (s)"] = (float(t[passed[0]]) if len(passed) else float("nan"), None, 0.0)
+    out["density-error mode, mean (%)"] = (mode(case), None, 0.0)
+    for s in ("P1", "P3"):
+        out[f"{s} arrival (s)"] = (m[s]["arrival"][0], m[s]["arrival"][1], 0.0)
+        out[f"{s} peak (Pa)"] = (m[s]["peak"][0], m[s]["peak"][1], 0.0)
+        tr, pr = run_[s]
+        te, pe = exp[s]
+        w, we = (tr >= 0.5) & (tr <= end), (te >= 0.5) & (te <= end)
+        out[f"{s} mean 0.5-{end:g} s (Pa)"] = (float(np.mean(pr[w])), float(np.mean(pe[we])), 0.0)
+    out["H2 arrival (s)"] = (m["H2"]["arrival"][0], m["H2"]["arrival"][1], 0.005)
+    for g in ("H2", "H4"):
+        out[f"{g} rms height error (m)"] = (m[g]["error"][0], None, 0.0)
+    return out
+
+
+def main():
+    ap = cws.arguments()
+    ap.add_argument("--spacing", type=float, default=0.05)
+    ap.add_argument("--end", type=float, default=2.5)
+    ap.add_argument("--reuse", action="store_true")
+    a = ap.parse_args()
+    a.work = os.path.abspath(a.work)
+    a.source = os.path.abspath(a.source)
+    os.makedirs(a.work, exist_ok=True)
+
+    # 1. The first 50 steps, serial against two ranks.
+    ref = make_case(a, "first50Serial", a.spacing, 0.05, tight=True)
+    got = make_case(a, "first50Ranks", a.spacing, 0.05, tight=True)
+    if st.check(serial(a, ref, 1) == 0 and ranks(a, got, 2) == 0, "the first 50 steps ran in serial and on 2 ranks"):
+        cws.compare("damBreak3D, first 50 steps", os.path.join(ref, "0.05"), os.path.join(got, "0.05"), 2, a.spacing)
+
+    # 2. The whole run: one and two threads, two ranks.
+    runs = {"serial, 1 thread": ("serial1", lambda c: serial(a, c, 1)),
+            "serial, 2 threads": ("serial2", lambda c: serial(a, c, 2)),
+            "2 ranks": ("ranks2", lambda c: ranks(a, c, 2))}
+    cases, rc = {}, []
+    for label, (folder, start) in runs.items():
+        case = os.path.join(a.work, folder)
+        done = a.reuse and any(abs(t - a.end) < 1e-9 for t, _ in st.time_dirs(case)) if os.path.isdir(case) else False
+        cases[label] = case if done else make_case(a, folder, a.spacing, a.end)
+        rc.append(0 if done else start(case))
+    if not st.check(rc == [0, 0, 0], f"the three runs reached t = {a.end} s (exits {rc}; logs <case>/log.run)"):
+        return st.summary()
+    mm = st.load_module(os.path.join(a.source, "tutorials", "damBreak3D", "spheric2Measures.py"), "spheric2Measures")
+    exp = mm.read_experiment()
+    res = {k: measures(c, mm, exp, a.end) for k, c in cases.items()}
+    print("%-34s %12s %12s %12s %12s" % ("measure", "1 thread", "2 threads", "2 ranks", "experiment"))
+    for name in res["2 ranks"]:
+        m1, m2, mr = (res[k][name][0] for k in cases)
+        e = res["2 ranks"][name][1]
+        print("%-34s %12.5g %12.5g %12.5g %12s" % (name, m1, m2, mr, "" if e is None else "%.5g" % e))
+    for name in res["2 ranks"]:
+        m1, m2, mr = (res[k][name][0] for k in cases)
+        spread = max(abs(m1 - m2), res["2 ranks"][name][2])
+        lo, hi = min(m1, m2) - spread, max(m1, m2) + spread
+        st.check(lo <= mr <= hi, f"{name}: 2 ranks {mr:.5g} within the serial runs' band [{lo:.5g}, {hi:.5g}] "
+                                 f"(1 thread {m1:.5g}, 2 threads {m2:.5g})")
+    return st.summary()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
