@@ -1,7 +1,7 @@
 // Inlets and outlets at run time: see OpenBoundaries.hpp.
 #include "boundaries/OpenBoundaries.hpp"
 #include "core/Log.hpp"
-#include "parallel/Communicator.hpp"
+#include "parallel/AgreedFailure.hpp"
 #include <cmath>
 
 namespace shizuku {
@@ -84,10 +84,12 @@ Vec<D> OpenBoundaries<D>::inletVelocity(int r, const Vec<D>& x, double t) const 
 template <int D>
 void OpenBoundaries<D>::prescribe(FlowState<D>& s) {
   auto& P = s.particles;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.isInlet(i)) P.velocity[i] = inletVelocity(regionOf(P.position[i], true), P.position[i], s.time);
-    else if (P.isOutlet(i)) P.pressure[i] = regions_[regionOf(P.position[i], false)].pressure;
-  }
+  agreeOnFailure<NumericalError, NumericalError>([&] {
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      if (P.isInlet(i)) P.velocity[i] = inletVelocity(regionOf(P.position[i], true), P.position[i], s.time);
+      else if (P.isOutlet(i)) P.pressure[i] = regions_[regionOf(P.position[i], false)].pressure;
+    }
+  });
 }
 
 template <int D>
@@ -99,56 +101,60 @@ bool OpenBoundaries<D>::afterStep(FlowState<D>& s) {
   bool anyRemoved = false;
   remove_.assign(n, 0);
   released_.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    if (P.isInlet(i)) {
-      P.position[i] += dt * P.velocity[i];
-      const int r = regionOf(P.position[i], true);
-      const auto& b = regions_[r];
-      if (b.pastFace(P.position[i]) <= 0) {
-        P.velocity[i] = inletVelocity(r, P.position[i], s.time);
-        continue;
-      }
-      // Released: it becomes fluid (keeping its velocity); its replacement goes one buffer
-      // length upstream.
-      P.type[i] = std::uint8_t(ParticleType::fluid);
-      const std::size_t k = P.addCopy(i);
-      P.type[k] = std::uint8_t(ParticleType::inlet);
-      P.position[k][b.axis] -= b.sign * b.length();
-      P.velocity[k] = inletVelocity(r, P.position[k], s.time);
-      released_.push_back(k);
-      remove_.push_back(0);
-      ++crossings_[r].count;
-      ++s.balance.released;
-      changed = true;
-    } else if (P.isOutlet(i)) {
-      P.position[i] += dt * P.velocity[i];
-      const int r = regionOf(P.position[i], false);
-      if (regions_[r].pastFarFace(P.position[i]) > 0) {
-        remove_[i] = 1;
-        anyRemoved = true;
-      } else if (regions_[r].pastFace(P.position[i]) < -0.5 * d0_) {
-        // Carried back upstream by a backflow (its velocity is its fluid neighbours'): it
-        // rejoins the fluid. Left an outlet particle, it would wander through the fluid
-        // and into the walls as a p = 0 point the walls do not hold.
-        P.type[i] = std::uint8_t(ParticleType::fluid);
-        --crossings_[r].count;
-        --s.balance.captured;
-        changed = true;
-      }
-    } else if (P.isFluid(i)) {
-      for (std::size_t r = 0; r < regions_.size(); ++r) {
+  // An inlet velocity that is not finite on one rank stops every rank (before the
+  // ranks number the released particles together).
+  agreeOnFailure<NumericalError, NumericalError>([&] {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (P.isInlet(i)) {
+        P.position[i] += dt * P.velocity[i];
+        const int r = regionOf(P.position[i], true);
         const auto& b = regions_[r];
-        if (b.inlet || b.pastFace(P.position[i]) <= 0 || !b.acrossInside(P.position[i], 0.5 * d0_)) continue;
-        P.type[i] = std::uint8_t(ParticleType::outlet);
-        P.pressure[i] = b.pressure;
+        if (b.pastFace(P.position[i]) <= 0) {
+          P.velocity[i] = inletVelocity(r, P.position[i], s.time);
+          continue;
+        }
+        // Released: it becomes fluid (keeping its velocity); its replacement goes one buffer
+        // length upstream.
+        P.type[i] = std::uint8_t(ParticleType::fluid);
+        const std::size_t k = P.addCopy(i);
+        P.type[k] = std::uint8_t(ParticleType::inlet);
+        P.position[k][b.axis] -= b.sign * b.length();
+        P.velocity[k] = inletVelocity(r, P.position[k], s.time);
+        released_.push_back(k);
+        remove_.push_back(0);
         ++crossings_[r].count;
-        ++s.balance.captured;
+        ++s.balance.released;
         changed = true;
-        if (b.pastFarFace(P.position[i]) > 0) { remove_[i] = 1; anyRemoved = true; }
-        break;
+      } else if (P.isOutlet(i)) {
+        P.position[i] += dt * P.velocity[i];
+        const int r = regionOf(P.position[i], false);
+        if (regions_[r].pastFarFace(P.position[i]) > 0) {
+          remove_[i] = 1;
+          anyRemoved = true;
+        } else if (regions_[r].pastFace(P.position[i]) < -0.5 * d0_) {
+          // Carried back upstream by a backflow (its velocity is its fluid neighbours'): it
+          // rejoins the fluid. Left an outlet particle, it would wander through the fluid
+          // and into the walls as a p = 0 point the walls do not hold.
+          P.type[i] = std::uint8_t(ParticleType::fluid);
+          --crossings_[r].count;
+          --s.balance.captured;
+          changed = true;
+        }
+      } else if (P.isFluid(i)) {
+        for (std::size_t r = 0; r < regions_.size(); ++r) {
+          const auto& b = regions_[r];
+          if (b.inlet || b.pastFace(P.position[i]) <= 0 || !b.acrossInside(P.position[i], 0.5 * d0_)) continue;
+          P.type[i] = std::uint8_t(ParticleType::outlet);
+          P.pressure[i] = b.pressure;
+          ++crossings_[r].count;
+          ++s.balance.captured;
+          changed = true;
+          if (b.pastFarFace(P.position[i]) > 0) { remove_[i] = 1; anyRemoved = true; }
+          break;
+        }
       }
     }
-  }
+  });
   numberReleased(P);
   if (anyRemoved) P.removeMarked(remove_);
   return changed || anyRemoved;

@@ -2,7 +2,7 @@
 #include "decomposition/DistributedTimeDirectory.hpp"
 #include "decomposition/ParticleGather.hpp"
 #include "decomposition/ParticlePacking.hpp"
-#include "parallel/Communicator.hpp"
+#include "parallel/AgreedFailure.hpp"
 #include <algorithm>
 #include <cstring>
 #include <limits>
@@ -10,21 +10,6 @@
 namespace shizuku {
 
 namespace {
-
-// Run `work` on every rank; if it threw on any, every rank throws the lowest such rank's
-// message (as E, InputError or std::runtime_error).
-template <class E, class F>
-void agreeOn(F&& work) {
-  std::string failure;
-  try {
-    work();
-  } catch (const std::exception& e) {
-    failure = e.what();
-    if (failure.empty()) failure = "failed";
-  }
-  failure = Communicator::world().firstMessage(failure);
-  if (!failure.empty()) throw E(failure);
-}
 
 // "" when every id of every rank's `ids` is held once; else which id is held twice.
 // Each id goes to rank id mod size, which looks for repeats among what it receives.
@@ -75,7 +60,7 @@ void writeDistributedTime(const std::string& caseDir, const std::string& timeNam
   ParticlePacking<D>::ensureFields(P, ParticlePacking<D>::agreedFieldMask(P));
   // Rank 0 first: the replace check and the folder, or its error on every rank.
   PieceWrite w;
-  agreeOn<std::runtime_error>([&] {
+  agreeOnFailure<std::runtime_error>([&] {
     if (world.isRoot()) w = beginPieceWrite(caseDir, timeName);
   });
   w.folder = world.broadcast(w.folder);
@@ -107,7 +92,7 @@ template <int D>
 ParticleSet<D> readDistributedShare(const std::string& caseDir, const std::string& timeName, TimeState& s) {
   const auto& world = Communicator::world();
   ParticleSet<D> P;
-  agreeOn<InputError>([&] { P = readTimeDirectory<D>(caseDir, timeName, s, world.rank(), world.size()); });
+  agreeOnFailure<InputError>([&] { P = readTimeDirectory<D>(caseDir, timeName, s, world.rank(), world.size()); });
   // A rank that read no piece takes the constants from those that did; they must agree.
   const bool has = P.spacing > 0;
   const double inf = std::numeric_limits<double>::infinity();

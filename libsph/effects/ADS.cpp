@@ -45,7 +45,9 @@ void ADS<D>::correctPositions(FlowState<D>& s) {
   if (delta_.size() != s.size()) throw std::logic_error("ads: allocate() was not called for this particle count");
   const auto& nl = s.neighbours;
   const double dFluid = distance_ * s.d0, dWall = o_.wallDistance * s.d0;
-  const long n = long(s.size());
+  // This rank's own particles (a ghost's position comes from its owner: IsphStep exchanges
+  // the positions after the corrections).
+  const long n = long(s.numOwned());
   const auto& u = s.particles.velocity;
   auto moved = [&](Index j) { return s.isFluid(j) && nearSurface(s.surfaceClass(j)); };
   long count = 0;

@@ -5,7 +5,7 @@
 #include "io/TimeName.hpp"
 #include "io/VtpFile.hpp"
 #include "operators/DensityErrorMeasure.hpp"
-#include "parallel/Communicator.hpp"
+#include "parallel/AgreedFailure.hpp"
 #include <cmath>
 #include <filesystem>
 
@@ -74,17 +74,9 @@ template <int D>
 double HealthGuard<D>::check(const FlowState<D>& s, const char* where, const std::string& caseDir) {
   const auto& world = Communicator::world();
   density_ = measureDensityError(s);  // collective: before any rank can fail
-  if (!world.isParallel()) return checkOwn(s, where, caseDir);
   // A failure found on one rank stops every rank, with its message.
-  std::string failure;
   double maxU = 0;
-  try {
-    maxU = checkOwn(s, where, caseDir);
-  } catch (const NumericalError& e) {
-    failure = e.what();
-  }
-  failure = world.firstMessage(failure);
-  if (!failure.empty()) throw NumericalError(failure);
+  agreeOnFailure<NumericalError, NumericalError>([&] { maxU = checkOwn(s, where, caseDir); });
   return world.max(maxU);
 }
 

@@ -1,5 +1,6 @@
 // What leaves the fluid after each step: see Outflow.hpp.
 #include "isph/Outflow.hpp"
+#include "parallel/AgreedFailure.hpp"
 #include "core/Log.hpp"
 #include <algorithm>
 
@@ -27,8 +28,10 @@ template <int D>
 void Outflow<D>::start(const FlowState<D>& s, const std::string& caseDir, const std::string& startTimeName) {
   caseDir_ = caseDir;
   startTimeName_ = startTimeName;
-  const FluidBalance& b = s.balance;
-  initialMass_ = double(long(s.particles.countFluid()) - b.released + b.captured) * s.particles.mass + b.removedMass;
+  const FluidBalance& b = s.balance;  // on several ranks: rank 0 carries what was read, the others 0
+  long fluid = 0;
+  for (std::size_t i = 0; i < s.numOwned(); ++i) fluid += s.particles.isFluid(i);
+  initialMass_ = Communicator::world().sum(double(fluid - b.released + b.captured) * s.particles.mass + b.removedMass);
 }
 
 template <int D>
@@ -45,7 +48,8 @@ std::vector<std::string> Outflow<D>::describe(const HealthLimits& limits) const 
 
 template <int D>
 bool Outflow<D>::afterStep(FlowState<D>& s, const std::vector<Vec<D>>& previous, HealthGuard<D>& guard) {
-  if (leaks_.active()) checkLeaks(s, previous, guard);
+  // A leak one rank finds stops every rank.
+  if (leaks_.active()) agreeOnFailure<NumericalError, NumericalError>([&] { checkLeaks(s, previous, guard); });
   const bool removed = removeOutside(s, guard);
   return (open_ && open_->afterStep(s)) || removed;
 }
@@ -57,11 +61,14 @@ bool Outflow<D>::removeOutside(FlowState<D>& s, HealthGuard<D>& guard) {
   outside_.clear();
   for (std::size_t i = 0; i < P.size(); ++i)
     if (s.isFluid(i) && P.position[i].allFinite() && !domain_.contains(P.position[i])) outside_.push_back(Index(i));
-  if (outside_.empty()) return false;
   const double mass = double(outside_.size()) * P.mass;
   const double limit = guard.limits().maxLostFraction * initialMass_;
-  if (s.balance.removedMass + mass > limit)
-    guard.failWith(s, cat("fluid removed through the domain's bounds would reach ", s.balance.removedMass + mass,
+  // Every rank's removals (each rank's balance counts its own; the ranks decide together).
+  const auto& world = Communicator::world();
+  const double lost = world.isParallel() ? world.sum(s.balance.removedMass + mass) : s.balance.removedMass + mass;
+  if (outside_.empty() && !(lost > limit)) return false;
+  if (lost > limit)
+    guard.failWith(s, cat("fluid removed through the domain's bounds would reach ", lost,
                           " kg, more than healthChecks/maxLostFraction ", guard.limits().maxLostFraction,
                           " of the initial fluid mass ", initialMass_, " kg, at step ", s.step, ", time ", s.time,
                           "; leaving now: ", listed<D>(outside_, [&](Index i) {

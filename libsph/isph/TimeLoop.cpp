@@ -192,7 +192,13 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
     p.leaks = Communicator::world().sum(long(outflow_.leakCount()));
     p.released = b.released;
     p.captured = b.captured;
-    info(progressLine(p, step_.report()));
+    StepReport r = step_.report();  // counts of this rank's own particles, summed over the ranks
+    const auto& world = Communicator::world();
+    if (world.isParallel()) {
+      r.ppeStandardRows = world.sum(r.ppeStandardRows);
+      if (r.adsCount >= 0) r.adsCount = world.sum(r.adsCount);
+    }
+    info(progressLine(p, r));
   }
   return stopNow;
 }

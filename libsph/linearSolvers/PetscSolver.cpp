@@ -12,6 +12,7 @@
 // hypreAMG|AMG|diagonal|ILU0 (AMG = BoomerAMG here; ILU0 = block Jacobi with ILU(0));
 // tolerance; maxIterations; amgReuse (solves a BoomerAMG hierarchy is kept).
 #include "core/Log.hpp"
+#include <algorithm>
 #include "linearSolvers/SolverBackends.hpp"
 #include "parallel/Communicator.hpp"
 #include <cmath>
@@ -80,7 +81,9 @@ class PetscSolver final : public LinearSolver {
   // The preconditioner (BoomerAMG's hierarchy) is kept while the rows stay the same
   // particles, for at most `reuse` solves, and rebuilt early when the iterations have grown
   // past 1.5x (+2) those of the solve that built it (as the serial AMG: docs/performance.md).
-  bool nextSolveStartsAfresh() const override { return stale_ || sinceSetup_ >= s_.reuse; }
+  // A kept hierarchy that does not converge within that many is given up for a new one, and
+  // the next `reuse` solves build their own (a flow whose matrix moves on every step).
+  bool nextSolveStartsAfresh() const override { return stale_ || sinceSetup_ >= s_.reuse || rebuildFor_ > 0; }
   void startAfreshAtNextSolve() override { stale_ = true; }
 
   LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
@@ -88,7 +91,10 @@ class PetscSolver final : public LinearSolver {
     bool keep = !nextSolveStartsAfresh() && A.rows() == rows_;
     keep = !world.any(!keep);  // every rank keeps, or every rank rebuilds
     LinearSolveResult r = solveWith(A, b, x, s_.preconditioner, keep);
+    int tried = 0;  // the iterations of a kept hierarchy that did not converge
     if (!r.ok && keep) {  // a kept hierarchy that no longer fits: rebuild before falling back
+      tried = r.iterations;
+      rebuildFor_ = s_.reuse + 1;
       keep = false;
       r = solveWith(A, b, x, s_.preconditioner, false);
     }
@@ -99,19 +105,24 @@ class PetscSolver final : public LinearSolver {
       r.usedFallback = true;
       r.message = cat(first, "; Jacobi fallback: ", r.ok ? "converged" : r.message);
       stale_ = true;
+      r.iterations += tried;
       return r;
     }
     if (!keep) {
+      rebuildFor_ = std::max(0, rebuildFor_ - 1);
       sinceSetup_ = 1;
       setupIterations_ = r.iterations;
       stale_ = false;
-    } else if (++sinceSetup_, r.iterations > 1.5 * setupIterations_ + 2) {
+    } else if (++sinceSetup_, r.iterations > staleAfter()) {
       stale_ = true;
     }
+    r.iterations += tried;
     return r;
   }
 
  private:
+  // A kept hierarchy is stale once a solve takes more iterations than this.
+  double staleAfter() const { return 1.5 * setupIterations_ + 2; }
   static std::string preconditionerName(const std::string& pc) {
     if (pc == "diagonal") return "Jacobi";
     if (pc == "ILU0") return "block Jacobi with ILU(0)";
@@ -158,6 +169,11 @@ class PetscSolver final : public LinearSolver {
                                     A.innerIndexPtr(), A.valuePtr(), &mat_), "MatCreateMPIAIJWithArrays");
     if (!ksp_) createKsp(pc);
     check(KSPSetReusePreconditioner(ksp_, keep ? PETSC_TRUE : PETSC_FALSE), "KSPSetReusePreconditioner");
+    // A kept hierarchy may stop at the iterations that mark it stale (1.5x + 2 those of the
+    // solve that built it): where the matrix has moved on (the free surface's rows changed
+    // class) it would otherwise take hundreds, and a new hierarchy costs a few.
+    const PetscInt most = keep ? std::min<PetscInt>(s_.maxIterations, PetscInt(staleAfter()) + 1) : s_.maxIterations;
+    check(KSPSetTolerances(ksp_, s_.tolerance, 0.0, 1e10, most), "KSPSetTolerances");
     check(KSPSetOperators(ksp_, mat_, mat_), "KSPSetOperators");
     ::Vec vb, vx;
     check(VecCreateMPIWithArray(PETSC_COMM_WORLD, 1, m, PetscInt(N), b.data(), &vb), "VecCreateMPIWithArray");
@@ -191,7 +207,7 @@ class PetscSolver final : public LinearSolver {
   KSP ksp_ = nullptr;
   Eigen::VectorXd x0_;
   long rows_ = -1;
-  int sinceSetup_ = 0, setupIterations_ = 0;
+  int sinceSetup_ = 0, setupIterations_ = 0, rebuildFor_ = 0;
   bool stale_ = true;
 };
 

@@ -12,6 +12,9 @@ the dam-break tutorial run without function objects:
   - `stopAt writeNow` written into system/controlDict while two ranks run: the same;
   - a folder of the user's (holding notes.txt) where a time is due, two ranks: exit 1, one
     error naming it, the folder as it was, no temporary folder left;
+  - the channel tutorial with an inlet velocity that stops being finite at t = 0.05 s, on two
+    ranks of which one holds the inlet: both stop together (no abort), exit 2, the failure
+    reported once, the last good state (t = 0.04 s) written;
   - a restart across rank counts: 20 steps on 2 ranks (their time written in two pieces),
     20 more on 3 from the time written (three ranks reading two pieces), 20 more on 1
     (serial, reading three): equal to one serial run of 60 steps within
@@ -163,6 +166,23 @@ def main():
              not any(".tmp-" in n for n in os.listdir(case)),
              f"a user's folder where a time is due: kept as it was, time 0 complete, no temporary left "
              f"({sorted(os.listdir(case))})")
+
+    # A numerical failure one rank meets alone: the channel's inlet lies on one rank only
+    # (the cut runs across the channel), and its velocity stops being finite at t = 0.05 s.
+    case = os.path.join(a.work, "inletFailure")
+    st.copy_case(os.path.join(a.source, "tutorials", "channelPoiseuille"), case)
+    path = os.path.join(case, "system", "particlesDict")
+    with open(path) as f:
+        text = f.read()
+    st.write(path, text.replace("velocity { type uniform; value (0.01 0); }",
+                                'velocity { type expression; value ("t < 0.05 ? 0.01 : sqrt(-1)" "0"); }'))
+    st.set_key(os.path.join(case, "system", "controlDict"), "endTime", 0.2)
+    r = subprocess.run(launch(a, case, 2), capture_output=True, text=True, timeout=120)
+    out = r.stdout + r.stderr
+    st.check(r.returncode == 2 and out.count("the velocity expressions give") == 1 and "MPI_ABORT" not in out,
+             f"a non-finite inlet velocity on one of two ranks: every rank stops together, exit {r.returncode} "
+             f"(2 expected), the failure reported once")
+    st.check(written(case)[-1:] == ["0.04"], f"a non-finite inlet velocity: the last good state written ({written(case)})")
 
     # Restart 2 -> 3 -> 1 ranks: each leg starts from the time the last one wrote.
     ref = fresh(a, "restartSerial", end=0.006, write=0.002)
