@@ -218,7 +218,7 @@ std::string particleFileOf(const std::string& timeDir) {
 namespace {
 
 // Pieces first .. last - 1 of a pvtp joined (each checked, and its time fields against
-// uniform/time), sorted by id.
+// uniform/time), sorted by id when there are several.
 template <int D>
 ParticleSet<D> readPieces(const std::string& dir, const std::vector<std::string>& pieces, std::size_t first,
                           std::size_t last, const TimeState& s) {
@@ -238,10 +238,14 @@ ParticleSet<D> readPieces(const std::string& dir, const std::vector<std::string>
     if (!whole.append(piece)) corruptVtp(path, "it holds other point arrays than " + pieces[first]);
     whole.nextId = std::max(whole.nextId, piece.nextId);
   }
-  std::vector<std::size_t> order(whole.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return whole.id[a] < whole.id[b]; });
-  whole.permute(order);
+  // One piece keeps its order (a rank reading its own piece back continues exactly);
+  // pieces joined are sorted by id, whatever pieces a share holds.
+  if (last - first > 1) {
+    std::vector<std::size_t> order(whole.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return whole.id[a] < whole.id[b]; });
+    whole.permute(order);
+  }
   return whole;
 }
 

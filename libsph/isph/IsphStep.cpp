@@ -67,6 +67,16 @@ void IsphStep<D>::dropGhosts() {
 }
 
 template <int D>
+void IsphStep<D>::repartitionAsAtRestart() {
+  if (!decomposition_) return;
+  StageTimers::Scope t(timers_, st_.decomposition);
+  decomposition_->stripGhosts(s_.particles);
+  decomposition_->start(s_.particles, s_.step);
+  s_.halo = &decomposition_->halo();
+  particleCountChanged();
+}
+
+template <int D>
 void IsphStep<D>::analyse() {
   auto& P = s_.particles;
   distribute();

@@ -61,6 +61,10 @@ class IsphStep {
   // Resizes the per-particle arrays after particles were removed (or restored); no
   // allocation when the count shrank. The analysis must follow.
   void particleCountChanged();
+  // A distributed run: the partition rebuilt from scratch from the particles as they are,
+  // as a restart from a time written now rebuilds it (docs/parallel.md 7). The analysis
+  // must follow.
+  void repartitionAsAtRestart();
   // The particles were replaced by this rank's own ones alone (the last good state).
   void particlesRestored() {
     if (decomposition_) decomposition_->ghostsDropped();

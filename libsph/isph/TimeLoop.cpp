@@ -178,6 +178,12 @@ bool TimeLoop<D>::advanceOneStep(double& previousDt, double& particleSteps, doub
   if (scheduled) step_.startAfreshAtNextStep();
   const double wall = clockSeconds() - wallStart;
   runFunctionObjects(writtenAtCurrentTime_, wall, particleSteps);
+  // On several ranks, the partition a restart from this time rebuilds, so that the run
+  // goes on as a restarted one would (docs/parallel.md 7).
+  if (scheduled && !stopNow && !atEnd() && Communicator::world().isParallel()) {
+    step_.repartitionAsAtRestart();
+    step_.analyse();
+  }
   if (s_.step % rc_.progressInterval == 0 || stopNow || atEnd()) {
     ProgressInfo p;
     p.step = s_.step;

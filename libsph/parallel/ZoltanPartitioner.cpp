@@ -68,7 +68,7 @@ ZoltanPartitioner::ZoltanPartitioner(const std::string& method, int dim) : impl_
   Zoltan_Set_Param(zz, "RETURN_LISTS", "EXPORT");
   Zoltan_Set_Param(zz, "KEEP_CUTS", "1");        // point assignment between partitions
   Zoltan_Set_Param(zz, "IMBALANCE_TOL", "1.02");
-  if (method == "RCB") Zoltan_Set_Param(zz, "RCB_REUSE", "1");  // a repartition starts from the last cuts
+  // RCB_REUSE is set by each partition (below).
   Zoltan_Set_Num_Obj_Fn(zz, &Impl::count, impl_.get());
   Zoltan_Set_Obj_List_Fn(zz, &Impl::list, impl_.get());
   Zoltan_Set_Num_Geom_Fn(zz, &Impl::dimension, impl_.get());
@@ -84,6 +84,9 @@ void ZoltanPartitioner::partition(const std::vector<double>& x, const std::vecto
   impl_->x = &x;
   impl_->ids = &ids;
   Zoltan_Set_Param(impl_->zz, "LB_APPROACH", fromScratch ? "PARTITION" : "REPARTITION");
+  // A repartition starts from the last cuts; a partition from scratch from nothing, so that
+  // it gives what a new partitioner gives on the same particles (a restart's).
+  if (method_ == "RCB") Zoltan_Set_Param(impl_->zz, "RCB_REUSE", fromScratch ? "0" : "1");
   int changes = 0, numGid = 0, numLid = 0, numImport = 0, numExport = 0;
   ZOLTAN_ID_PTR importGids = nullptr, importLids = nullptr, exportGids = nullptr, exportLids = nullptr;
   int *importProcs = nullptr, *importParts = nullptr, *exportProcs = nullptr, *exportParts = nullptr;

@@ -15,6 +15,9 @@ the dam-break tutorial run without function objects:
   - the channel tutorial with an inlet velocity that stops being finite at t = 0.05 s, on two
     ranks of which one holds the inlet: both stop together (no abort), exit 2, the failure
     reported once, the last good state (t = 0.04 s) written;
+  - a restart on the same rank count (2 and 3): 40 steps writing at step 20, and the same
+    case restarted from its step-20 time, equal at step 40 bit for bit (the uninterrupted
+    run rebuilds its partition from scratch after each scheduled write, as a restart does);
   - a restart across rank counts: 20 steps on 2 ranks (their time written in two pieces),
     20 more on 3 from the time written (three ranks reading two pieces), 20 more on 1
     (serial, reading three): equal to one serial run of 60 steps within
@@ -27,10 +30,13 @@ usage: ranksAndInput.py SOURCE WORK --shizuku BIN --mpirun "mpirun --allow-run-a
 import os
 import re
 import shlex
+import shutil
 import signal
 import subprocess
 import sys
 import time
+
+import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "support"))
@@ -89,7 +95,6 @@ def check_stop(name, case, rc, text, ranks_total):
     new = [t for t in times if t != "0"]
     if st.check(len(new) == 1, f"{name}: one time directory written after the start ({new})"):
         data = st.read_vtp(os.path.join(case, new[0]))
-        import numpy as np
         ids = data["id"] if data is not None else np.array([])
         st.check(len(ids) == ranks_total and len(np.unique(ids)) == ranks_total,
                  f"{name}: time {new[0]} holds every particle once ({len(ids)} of {ranks_total})")
@@ -183,6 +188,21 @@ def main():
              f"a non-finite inlet velocity on one of two ranks: every rank stops together, exit {r.returncode} "
              f"(2 expected), the failure reported once")
     st.check(written(case)[-1:] == ["0.04"], f"a non-finite inlet velocity: the last good state written ({written(case)})")
+
+    # A restart on the same rank count continues bit for bit: 40 steps on N ranks writing
+    # at step 20, against the same run restarted from its step-20 time.
+    for ranks in (2, 3):
+        whole = fresh(a, f"sameRanks{ranks}", end=0.004, write=0.002)
+        rw = compare.parallel(a, whole, ranks)
+        again = os.path.join(a.work, f"sameRanksRestart{ranks}")
+        st.copy_case(whole, again)
+        shutil.copytree(os.path.join(whole, "0.002"), os.path.join(again, "0.002"))
+        rr = compare.parallel(a, again, ranks)
+        x, y = st.read_vtp(os.path.join(whole, "0.004")), st.read_vtp(os.path.join(again, "0.004"))
+        same = rw == 0 and rr == 0 and x is not None and y is not None and all(
+            np.array_equal(x[k][np.argsort(x["id"])], y[k][np.argsort(y["id"])]) for k in ("position", "U", "p", "rhoN"))
+        st.check(same, f"restart on {ranks} ranks from the time written at step 20: step 40 equal to the "
+                       f"uninterrupted run's bit for bit (exits {rw}, {rr})")
 
     # Restart 2 -> 3 -> 1 ranks: each leg starts from the time the last one wrote.
     ref = fresh(a, "restartSerial", end=0.006, write=0.002)
