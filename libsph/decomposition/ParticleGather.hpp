@@ -1,8 +1,7 @@
 // The whole particle set on rank 0, gathered from every rank's own particles and sorted by
-// id (docs/parallel.md 8): what a distributed run writes, in the serial format, so that
-// ParaView, the post-processing tools and a restart on any number of ranks read it
-// unchanged. Rank 0 holds every particle while it writes (a per-rank piece format is the
-// step beyond: docs/parallel.md, "Status").
+// id: what a distributed run hands to the one-file-per-field ascii format (writeFormat
+// ascii), which is not written in pieces (docs/parallel.md 7). Rank 0 holds every particle
+// while it writes.
 // Reads no dictionary keys.
 #pragma once
 #include "decomposition/ParticlePacking.hpp"
