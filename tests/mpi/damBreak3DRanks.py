@@ -14,26 +14,29 @@ usage: damBreak3DRanks.py SOURCE WORK --shizuku BIN --mpirun "mpirun --allow-run
    and two ranks of one thread. The two ranks solve the pressure with another solver
    (PETSc, BoomerAMG) to the same tolerance and sum in another order; so do two threads
    (the AMG's set-up), and a tighter tolerance changes the answer by what the tolerance
-   allows. These serial runs are equally right answers; after the impact on the box they
-   part, as round-off and tolerance grow through the breaking waves. Each measure m below is
-   asserted within the band the serial runs span, widened by their own spread,
-       [min(m_k) - s, max(m_k) + s],  s = max(max(m_k) - min(m_k), resolution),
-   where the resolution is what the measure can resolve: the gauges' 5 ms sampling for
-   arrival times; for a sensor's mean pressure over 0.5-2.5 s, the difference two runs'
-   means can show by chance, 2 sqrt(2) times the mean's standard error (from the 1-thread
-   run's eight quarter-second window means: the 9 mm sensor is a fifth of d0, so it reads
-   the noise of a few particles, and the serial runs' window means differ by up to 2.6 kPa);
-   1e-4 of the value for the rest (the solver tolerance grown over the run before the
-   serial runs part: the 2-rank run's impact peaks differ from serial by 1e-5). The
-   measures:
-     - the surge front: the smallest fluid x (function object `front`) at t = 0.2, 0.3 and
-       0.4 s, before the water reaches the box (x = 0.8245 m), and the time it passes
-       x = 1.5 m;
-     - eq. 22's interior density-error mode, the mean over the run's samples;
-     - wall pressure: the filtered P1 and P3 (100 Hz, the tutorial's sensors): arrival (first
-       p > 500 Pa), peak, and the mean over 0.5-2.5 s (the quasi-static load behind the impact);
-     - the heights at H2 and H4: arrival at H2 (first h > 2 cm) and the rms difference from
-       the experiment over the run (spheric2Measures.py).
+   allows. These serial runs are equally right answers. Until about 1 s they agree to
+   1e-3 m in the heights; after that, through the breaking waves behind the box, they part
+   as far as the signal itself (quarter-second rms height errors at H2 of 0.045-0.062 m in
+   one window). So the measures are of two kinds:
+   - before the runs part, asserted within the band the serial runs span, widened by their
+     spread,  [min(m_k) - s, max(m_k) + s],  s = max(max(m_k) - min(m_k), resolution),
+     the resolution being the gauges' 5 ms sampling for an arrival time and 1e-4 of the
+     value otherwise (the solver tolerance grown by the impact: the 2-rank impact peaks
+     differ from serial by 1e-5):
+       - the surge front: the smallest fluid x (function object `front`) at t = 0.2, 0.3 and
+         0.4 s, before the water reaches the box (x = 0.8245 m), and when it passes x = 1.5 m;
+       - wall pressure: the filtered P1 and P3 (100 Hz, the tutorial's sensors): arrival
+         (first p > 500 Pa) and peak (the impact on the box);
+       - the heights: arrival at H2 (first h > 2 cm), the rms difference from the
+         experiment at H2 and H4 up to 1 s;
+   - statistics of the whole run, where each run is one draw of a chaotic flow: asserted
+     within the 99 % prediction interval of the three serial runs (Student t with two
+     degrees of freedom: mean +- 9.92 sd sqrt(1 + 1/3); wide, since three draws say little
+     of the spread: a sensor or gauge reading nothing falls outside it, one reading half
+     may not; the sharp checks of the sensors and gauges are the ones above):
+       - eq. 22's interior density-error mode, the mean over the run's samples;
+       - P1 and P3, mean over 0.5-2.5 s (the quasi-static load behind the impact);
+       - the rms height error at H2 and H4 over the run.
 3. The pressure solve's cost on two ranks: the mean PPE iterations per step at most twice
    the serial run's (a BoomerAMG hierarchy kept past its use cost 93-583 a step here).
 It prints each measure for the three runs and the experiment's value where there is one.
@@ -100,30 +103,44 @@ def ppe_iterations(case):
 
 
 def measures(case, measure_module, exp, end):
+    """{name: (value, experiment's or None, kind)}, kind a resolution (a measure taken before
+    the runs part) or "statistic" (of the whole run)."""
     run_ = measure_module.read_run(case)
     m = measure_module.measures(run_, exp, end)
+    early = measure_module.measures(run_, exp, 1.0)
     out = {}
     t, x = front(case)
     for at in (0.2, 0.3, 0.4):
         out[f"front x at {at} s (m)"] = (float(np.interp(at, t, x)), None, 0.0)
     passed = np.nonzero(x < 1.5)[0]
     out["front passes x = 1.5 m (s)"] = (float(t[passed[0]]) if len(passed) else float("nan"), None, 0.0)
-    out["density-error mode, mean (%)"] = (mode(case), None, 0.0)
     for s in ("P1", "P3"):
         out[f"{s} arrival (s)"] = (m[s]["arrival"][0], m[s]["arrival"][1], 0.0)
         out[f"{s} peak (Pa)"] = (m[s]["peak"][0], m[s]["peak"][1], 0.0)
+    out["H2 arrival (s)"] = (m["H2"]["arrival"][0], m["H2"]["arrival"][1], 0.005)  # the gauges' sampling
+    for g in ("H2", "H4"):
+        out[f"{g} rms height error to 1 s (m)"] = (early[g]["error"][0], None, 0.0)
+    out["density-error mode, mean (%)"] = (mode(case), None, "statistic")
+    for s in ("P1", "P3"):
         tr, pr = run_[s]
         te, pe = exp[s]
         w, we = (tr >= 0.5) & (tr <= end), (te >= 0.5) & (te <= end)
-        # The mean's own uncertainty: the scatter of its quarter-second windows' means over
-        # their count's root (the sensor, 9 mm, is a fifth of d0: the noise of a few particles).
-        windows = [np.mean(pr[(tr >= t0) & (tr < t0 + 0.25)]) for t0 in np.arange(0.5, end - 1e-9, 0.25)]
-        error = np.std(windows, ddof=1) / np.sqrt(len(windows))
-        out[f"{s} mean 0.5-{end:g} s (Pa)"] = (float(np.mean(pr[w])), float(np.mean(pe[we])), 2 * np.sqrt(2) * error)
-    out["H2 arrival (s)"] = (m["H2"]["arrival"][0], m["H2"]["arrival"][1], 0.005)  # the gauges' sampling
+        out[f"{s} mean 0.5-{end:g} s (Pa)"] = (float(np.mean(pr[w])), float(np.mean(pe[we])), "statistic")
     for g in ("H2", "H4"):
-        out[f"{g} rms height error (m)"] = (m[g]["error"][0], None, 0.0)
+        out[f"{g} rms height error (m)"] = (m[g]["error"][0], None, "statistic")
     return out
+
+
+def band(serials, kind):
+    """The interval the 2-rank value must lie in (the module's docstring)."""
+    serials = np.array(serials)
+    if kind == "statistic":
+        from scipy.stats import t as student
+        n = len(serials)
+        half = student.ppf(0.995, n - 1) * np.std(serials, ddof=1) * np.sqrt(1 + 1 / n)
+        return serials.mean() - half, serials.mean() + half
+    spread = max(serials.max() - serials.min(), kind or 1e-4 * abs(serials[0]))
+    return serials.min() - spread, serials.max() + spread
 
 
 def main():
@@ -168,10 +185,10 @@ def main():
         print("%-34s %12.5g %12.5g %12.5g %12.5g %12s" % (name, m1, m2, m3, mr, "" if e is None else "%.5g" % e))
     for name in res["2 ranks"]:
         m1, m2, m3, mr = (res[k][name][0] for k in cases)
-        serials = (m1, m2, m3)
-        spread = max(max(serials) - min(serials), res["serial, 1 thread"][name][2] or 1e-4 * abs(m1))
-        lo, hi = min(serials) - spread, max(serials) + spread
-        st.check(lo <= mr <= hi, f"{name}: 2 ranks {mr:.5g} within the serial runs' band [{lo:.5g}, {hi:.5g}] "
+        kind = res["2 ranks"][name][2]
+        lo, hi = band((m1, m2, m3), kind)
+        st.check(lo <= mr <= hi, f"{name}: 2 ranks {mr:.5g} within the serial runs' "
+                                 f"{'99 % prediction interval' if kind == 'statistic' else 'band'} [{lo:.5g}, {hi:.5g}] "
                                  f"(1 thread {m1:.5g}, 2 threads {m2:.5g}, 1e-9 {m3:.5g})")
     # The pressure solve's cost: the two ranks' BoomerAMG against the serial AMG, in
     # iterations per step (BoomerAMG's V-cycle is the stronger: 4-6 against 7-15 where both
