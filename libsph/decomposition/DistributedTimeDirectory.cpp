@@ -4,7 +4,6 @@
 #include "decomposition/ParticlePacking.hpp"
 #include "parallel/AgreedFailure.hpp"
 #include <algorithm>
-#include <cstring>
 #include <limits>
 
 namespace shizuku {
