@@ -72,6 +72,7 @@ Domain<D> Domain<D>::read(const Dictionary& controlDict, const std::vector<WallB
                       "the domain does not hold the fluid: particle id ", p.id[i], " at (", where, ") lies outside ",
                       box<D>(d.min_, d.max_));
       }
+    // The message carries the keyword to blame ("min" or "max") in its first three letters.
     outside = Communicator::world().firstMessage(outside);
     if (!outside.empty()) dict->error(outside.substr(0, 3), outside.substr(3));
   }

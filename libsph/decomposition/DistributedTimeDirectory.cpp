@@ -14,37 +14,23 @@ namespace {
 // Each id goes to rank id mod size, which looks for repeats among what it receives.
 std::string repeatedId(const std::vector<std::int64_t>& ids) {
   const auto& world = Communicator::world();
-  const int nranks = world.size(), me = world.rank();
+  const int nranks = world.size();
   std::vector<long> count(std::size_t(nranks), 0);
   for (std::int64_t id : ids) ++count[std::size_t(id % nranks)];
-  std::vector<long> start(std::size_t(nranks) + 1, 0);
-  for (int r = 0; r < nranks; ++r) start[std::size_t(r) + 1] = start[std::size_t(r)] + count[std::size_t(r)];
+  std::vector<long> fill(std::size_t(nranks), 0);  // where each rank's ids start in `send`
+  for (std::size_t r = 1; r < fill.size(); ++r) fill[r] = fill[r - 1] + count[r - 1];
   std::vector<std::int64_t> send(ids.size());
-  std::vector<long> fill(start.begin(), start.end() - 1);
   for (std::int64_t id : ids) send[std::size_t(fill[std::size_t(id % nranks)]++)] = id;
-  const std::vector<long> recvCount = world.exchangeCounts(count);
+  std::vector<long> sendBytes(count), recvBytes = world.exchangeCounts(count);
   long total = 0;
-  for (long c : recvCount) total += c;
-  std::vector<std::int64_t> mine(static_cast<std::size_t>(total));
-  std::vector<int> ranks;
-  std::vector<const char*> sendPtr;
-  std::vector<char*> recvPtr;
-  std::vector<long> sendBytes, recvBytes;
-  long at = 0;
-  for (int r = 0; r < nranks; ++r) {
-    const std::size_t k = std::size_t(r);
-    if (r == me) {
-      std::copy(send.begin() + start[k], send.begin() + start[k + 1], mine.begin() + at);
-    } else if (count[k] > 0 || recvCount[k] > 0) {
-      ranks.push_back(r);
-      sendPtr.push_back(reinterpret_cast<const char*>(send.data() + start[k]));
-      sendBytes.push_back(count[k] * long(sizeof(std::int64_t)));
-      recvPtr.push_back(reinterpret_cast<char*>(mine.data() + at));
-      recvBytes.push_back(recvCount[k] * long(sizeof(std::int64_t)));
-    }
-    at += recvCount[k];
+  for (std::size_t r = 0; r < sendBytes.size(); ++r) {
+    total += recvBytes[r];
+    sendBytes[r] *= long(sizeof(std::int64_t));
+    recvBytes[r] *= long(sizeof(std::int64_t));
   }
-  world.exchange(ranks, sendPtr, sendBytes, recvPtr, recvBytes, 17);
+  std::vector<std::int64_t> mine(static_cast<std::size_t>(total));
+  world.allToAll(reinterpret_cast<const char*>(send.data()), sendBytes, reinterpret_cast<char*>(mine.data()),
+                 recvBytes, 17);
   std::sort(mine.begin(), mine.end());
   const auto twice = std::adjacent_find(mine.begin(), mine.end());
   return world.firstMessage(twice == mine.end() ? "" : "particle id " + std::to_string(*twice) + " is held twice");

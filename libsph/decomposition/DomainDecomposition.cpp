@@ -106,24 +106,15 @@ void DomainDecomposition<D>::migrate(ParticleSet<D>& P) {
       ParticlePacking<D>::pack(P, mask, i, sendBuf_.data() + std::size_t(fill[owner_[i]]++) * bytes);
       leaving_[i] = 1;
     }
-  std::vector<int> ranks;
-  std::vector<const char*> sendPtr;
-  std::vector<char*> recvPtr;
-  std::vector<long> sendBytes, recvBytes;
   long received = 0;
   for (int r = 0; r < nranks; ++r) received += recvCount[r];
   recvBuf_.resize(std::size_t(received) * bytes);
-  long at = 0;
+  std::vector<long> sendBytes(sendCount), recvBytes(recvCount);
   for (int r = 0; r < nranks; ++r) {
-    if (r == me || (sendCount[r] == 0 && recvCount[r] == 0)) continue;
-    ranks.push_back(r);
-    sendPtr.push_back(sendBuf_.data() + std::size_t(sendStart[r]) * bytes);
-    sendBytes.push_back(sendCount[r] * long(bytes));
-    recvPtr.push_back(recvBuf_.data() + std::size_t(at) * bytes);
-    recvBytes.push_back(recvCount[r] * long(bytes));
-    at += recvCount[r];
+    sendBytes[r] *= long(bytes);
+    recvBytes[r] *= long(bytes);
   }
-  world.exchange(ranks, sendPtr, sendBytes, recvPtr, recvBytes, 13);
+  world.allToAll(sendBuf_.data(), sendBytes, recvBuf_.data(), recvBytes, 13);
   const long sent = sendStart[nranks];
   stats_.migrated = world.sum(sent);
   P.removeMarked(leaving_);

@@ -6,8 +6,6 @@
 #pragma once
 #include "decomposition/ParticlePacking.hpp"
 #include "parallel/Communicator.hpp"
-#include <algorithm>
-#include <numeric>
 
 namespace shizuku {
 
@@ -28,21 +26,11 @@ ParticleSet<D> gatherParticles(const ParticleSet<D>& P, std::size_t owned) {
   whole.spacing = P.spacing;
   whole.nextId = P.nextId;
   const std::size_t n = all.size() / bytes;
-  ParticleSet<D> unsorted = whole;
-  unsorted.resize(n);
-  ParticlePacking<D>::ensureFields(unsorted, mask);
-  const char* in = all.data();
-  for (std::size_t i = 0; i < n; ++i) in = ParticlePacking<D>::unpack(unsorted, mask, i, in);
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return unsorted.id[a] < unsorted.id[b]; });
   whole.resize(n);
   ParticlePacking<D>::ensureFields(whole, mask);
-  std::vector<char> one(bytes);
-  for (std::size_t k = 0; k < n; ++k) {
-    ParticlePacking<D>::pack(unsorted, mask, order[k], one.data());
-    ParticlePacking<D>::unpack(whole, mask, k, one.data());
-  }
+  const char* in = all.data();
+  for (std::size_t i = 0; i < n; ++i) in = ParticlePacking<D>::unpack(whole, mask, i, in);
+  whole.sortById();
   return whole;
 }
 

@@ -10,7 +10,6 @@
 #include "io/VtpLayout.hpp"
 #include "io/VtpPieces.hpp"
 #include <algorithm>
-#include <numeric>
 #include <cstdio>
 #include <cerrno>
 #include <csignal>
@@ -49,21 +48,11 @@ void moveIntoPlace(const std::string& tmp, const std::string& target) {
   fileops::removeTree(old);
 }
 
-// "particles_<digits>.vtp", a piece of a run on several ranks.
-bool isPieceName(const std::string& entry) {
-  const std::string head = "particles_", tail = ".vtp";
-  if (entry.size() <= head.size() + tail.size() || entry.compare(0, head.size(), head) != 0 ||
-      entry.compare(entry.size() - tail.size(), tail.size(), tail) != 0)
-    return false;
-  const std::string digits = entry.substr(head.size(), entry.size() - head.size() - tail.size());
-  return digits.find_first_not_of("0123456789") == std::string::npos;
-}
-
 // The entries a time directory written by Shizuku holds: particles.vtp (or
 // particles.pvtp and its pieces), uniform/ and, with writeFormat ascii, one file per
 // field (AsciiFields.hpp).
 bool writtenByShizuku(const std::string& entry) {
-  if (entry == "particles.vtp" || entry == "particles.pvtp" || isPieceName(entry) || entry == "uniform" ||
+  if (entry == "particles.vtp" || entry == "particles.pvtp" || isPieceFileName(entry) || entry == "uniform" ||
       entry == "position")
     return true;
   bool field = false;
@@ -240,12 +229,7 @@ ParticleSet<D> readPieces(const std::string& dir, const std::vector<std::string>
   }
   // One piece keeps its order (a rank reading its own piece back continues exactly);
   // pieces joined are sorted by id, whatever pieces a share holds.
-  if (last - first > 1) {
-    std::vector<std::size_t> order(whole.size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return whole.id[a] < whole.id[b]; });
-    whole.permute(order);
-  }
+  if (last - first > 1) whole.sortById();
   return whole;
 }
 

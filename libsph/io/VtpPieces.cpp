@@ -11,7 +11,18 @@
 
 namespace shizuku {
 
-std::string pieceFileName(int k) { return "particles_" + std::to_string(k) + ".vtp"; }
+namespace {
+const std::string kHead = "particles_", kTail = ".vtp";
+}  // namespace
+
+std::string pieceFileName(int k) { return kHead + std::to_string(k) + kTail; }
+
+bool isPieceFileName(const std::string& name) {
+  if (name.size() <= kHead.size() + kTail.size() || name.compare(0, kHead.size(), kHead) != 0 ||
+      name.compare(name.size() - kTail.size(), kTail.size(), kTail) != 0)
+    return false;
+  return name.find_first_not_of("0123456789", kHead.size()) == name.size() - kTail.size();
+}
 
 namespace {
 

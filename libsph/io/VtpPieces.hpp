@@ -18,6 +18,8 @@ constexpr int kMaxPieces = 1 << 22;
 
 // "particles_<k>.vtp"
 std::string pieceFileName(int k);
+// Whether name is one of those ("particles_" digits ".vtp").
+bool isPieceFileName(const std::string& name);
 
 // Write the header for `pieces` pieces whose point arrays are the fields p holds
 // (non-empty or mandatory; every piece holds the same fields). Throws

@@ -1,6 +1,7 @@
 // Collective operations across ranks: see Communicator.hpp.
 #include "parallel/Communicator.hpp"
 #include <unistd.h>
+#include <algorithm>
 #include <cstdlib>
 #include <numeric>
 #include <stdexcept>
@@ -249,5 +250,29 @@ bool Communicator::everyRankFailed(double) const { return true; }
 void Communicator::abort(int status) const { std::exit(status); }
 
 #endif
+
+void Communicator::allToAll(const char* send, const std::vector<long>& sendBytes, char* recv,
+                            const std::vector<long>& recvBytes, int tag) const {
+  std::vector<int> ranks;
+  std::vector<const char*> sendPtr;
+  std::vector<char*> recvPtr;
+  std::vector<long> sendSize, recvSize;
+  long out = 0, in = 0;
+  for (int r = 0; r < size_; ++r) {
+    const std::size_t k = std::size_t(r);
+    if (r == rank_) {
+      std::copy(send + out, send + out + sendBytes[k], recv + in);
+    } else if (sendBytes[k] > 0 || recvBytes[k] > 0) {
+      ranks.push_back(r);
+      sendPtr.push_back(send + out);
+      sendSize.push_back(sendBytes[k]);
+      recvPtr.push_back(recv + in);
+      recvSize.push_back(recvBytes[k]);
+    }
+    out += sendBytes[k];
+    in += recvBytes[k];
+  }
+  exchange(ranks, sendPtr, sendSize, recvPtr, recvSize, tag);
+}
 
 }  // namespace shizuku

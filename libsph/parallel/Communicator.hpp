@@ -50,6 +50,11 @@ class Communicator {
   void exchange(const std::vector<int>& ranks, const std::vector<const char*>& send,
                 const std::vector<long>& sendBytes, const std::vector<char*>& recv,
                 const std::vector<long>& recvBytes, int tag) const;
+  // Bytes to every rank at once: rank r's part of `send` is sendBytes[r] bytes, the parts
+  // one after the other in rank order; recv takes recvBytes[r] from each rank likewise
+  // (recvBytes from exchangeCounts). This rank's own part is copied. Collective.
+  void allToAll(const char* send, const std::vector<long>& sendBytes, char* recv,
+                const std::vector<long>& recvBytes, int tag) const;
   // The message of the lowest rank whose message is not empty ("" when all are): a
   // failure one rank found, made every rank's, so that all stop together. Collective.
   std::string firstMessage(const std::string& mine) const;

@@ -5,6 +5,7 @@
 // reordering all use, so a new field is added in one place.
 #pragma once
 #include "core/types.hpp"
+#include <algorithm>
 #include <cstddef>
 #include <type_traits>
 
@@ -101,6 +102,13 @@ struct ParticleSet {
     };
     apply(position);
     forEachField([&](const char*, auto& v) { apply(v); });
+  }
+  // Sort the particles by id (a copy of each field, as permute).
+  void sortById() {
+    std::vector<std::size_t> order(size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
+    permute(order);
   }
   // Keep particles first .. last - 1 alone.
   void keepRange(std::size_t first, std::size_t last) {
