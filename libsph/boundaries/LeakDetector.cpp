@@ -48,7 +48,8 @@ bool LeakDetector<D>::crossed(const WallBox<D>& w, int face, const Vec<D>& from,
 
 template <int D>
 void LeakDetector<D>::find(const ParticleSet<D>& p, const std::vector<Vec<D>>& previous,
-                           const PeriodicBox<D>& periodic, std::vector<Leak>& leaks) const {
+                           const PeriodicBox<D>& periodic, std::vector<Leak>& leaks, const std::vector<Pose<D>>& poses,
+                           const std::vector<Pose<D>>& previousPoses) const {
   leaks.clear();
   if (walls_.empty()) return;
   const long n = long(p.size());
@@ -56,15 +57,18 @@ void LeakDetector<D>::find(const ParticleSet<D>& p, const std::vector<Vec<D>>& p
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     if (!p.isFluid(std::size_t(i))) continue;
-    const Vec<D>& x = p.position[std::size_t(i)];
+    const Vec<D>& now = p.position[std::size_t(i)];
     for (int w = 0; w < int(walls_.size()); ++w) {
       const WallBox<D>& b = walls_[std::size_t(w)];
+      const bool moving = b.motion >= 0;
+      const Vec<D> x = moving ? poses[std::size_t(b.motion)].restPosition(now) : now;
       Leak l{Index(i), w, -1, false};
       if (b.inLayers(x, 0.5 * b.d0)) {
         l.face = b.faceOf(x);
       } else if (withPrevious && !b.solid) {
         // The minimum image of the previous position: a periodic wrap is no crossing.
-        const Vec<D> from = x - periodic.difference(x, previous[std::size_t(i)]);
+        const Vec<D> before = now - periodic.difference(now, previous[std::size_t(i)]);
+        const Vec<D> from = moving ? previousPoses[std::size_t(b.motion)].restPosition(before) : before;
         for (int f = 0; f < 2 * D && l.face < 0; ++f)
           if (!b.open[f] && crossed(b, f, from, x)) { l.face = f; l.crossed = true; }
       }

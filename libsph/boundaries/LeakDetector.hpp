@@ -13,11 +13,15 @@
 // squeezed between the floor and the box's bottom row is a leak. So is a curved or STL solid (WallBox::body):
 // a particle inside it with phi < -d0/2 (past its first layer) is a leak through its
 // surface; only particles in its bounding box evaluate phi.
+// A moving wall (WallBox::motion >= 0) is tested in its own frame: the particle's position
+// is taken back to the wall's rest frame with the wall's pose now (X = R^T (x - b)), its
+// previous position with the pose one step earlier.
 // Reads no dictionary keys (the walls come from particlesDict through the generator).
 #pragma once
 #include "particles/NeighbourList.hpp"
 #include "particles/ParticleSet.hpp"
 #include "particles/WallBox.hpp"
+#include "particles/WallMotion.hpp"
 #include <string>
 #include <vector>
 
@@ -39,8 +43,11 @@ class LeakDetector {
   const std::vector<WallBox<D>>& walls() const { return walls_; }
   // The leaks of the fluid particles of p; `previous` holds their positions one step
   // earlier, same order (empty: the crossing test is skipped). Sorted by particle.
+  // poses, previousPoses: the moving walls' poses now and one step earlier, indexed by
+  // WallBox::motion (empty without moving walls).
   void find(const ParticleSet<D>& p, const std::vector<Vec<D>>& previous, const PeriodicBox<D>& periodic,
-            std::vector<Leak>& leaks) const;
+            std::vector<Leak>& leaks, const std::vector<Pose<D>>& poses = {},
+            const std::vector<Pose<D>>& previousPoses = {}) const;
   // "wall 'tank', face left (-x)"; "wall 'pier' (solid cylinder)".
   std::string describe(const Leak& l) const;
 

@@ -27,6 +27,13 @@ WaterLevel<D>::WaterLevel(const std::string& name, const Dictionary& dict)
 }
 
 template <int D>
+WaterLevel<D>::WaterLevel(const std::string& name, const std::string& type, const Dictionary& dict,
+                          std::vector<Vec<D>> points, double minKernelSum)
+    : SampledFunctionObject<D>(name, type, dict), points_(std::move(points)), minKernelSum_(minKernelSum) {
+  heights_.assign(points_.size(), 0);
+}
+
+template <int D>
 std::string WaterLevel<D>::details() const {
   return cat(", ", points_.size(), " gauge", points_.size() == 1 ? "" : "s", ", surface at kernel sum ",
              formatNumber(minKernelSum_));
@@ -103,15 +110,20 @@ const std::vector<double>& WaterLevel<D>::evaluate(const FlowState<D>& s) {
 }
 
 template <int D>
-void WaterLevel<D>::open(const FlowState<D>&, const RunInfo& info) {
-  this->file_.emplace(this->makeFile(info, "height.dat"));
+std::string WaterLevel<D>::fileComment() const {
   std::string where;
   for (const auto& x : points_) where += (where.empty() ? "" : " ") + formatNumber<D>(x);
-  this->file_->comment(cat("water height above the gauge points ", where, " (m, up along +y): where the fluid's "
-                           "kernel sum crosses ", formatNumber(minKernelSum_)));
+  return cat("water height above the gauge points ", where, " (m, up along +y): where the fluid's kernel sum crosses ",
+             formatNumber(minKernelSum_));
+}
+
+template <int D>
+void WaterLevel<D>::open(const FlowState<D>&, const RunInfo& info) {
+  this->file_.emplace(this->makeFile(info, fileName_));
+  this->file_->comment(fileComment());
   std::vector<std::string> names{"time"}, units{"s"};
   for (std::size_t g = 0; g < points_.size(); ++g) {
-    names.push_back(cat("point", g));
+    names.push_back(cat(columnPrefix_, g));
     units.push_back("m");
   }
   this->file_->columns(names, units);
@@ -120,7 +132,7 @@ void WaterLevel<D>::open(const FlowState<D>&, const RunInfo& info) {
 template <int D>
 void WaterLevel<D>::sample(const FlowState<D>& s, const RunInfo&) {
   std::string row = PostProcessingFile::number(s.time);
-  for (double h : evaluate(s)) row += " " + PostProcessingFile::number(h);
+  for (double h : evaluate(s)) row += " " + PostProcessingFile::number(h + offset_);
   this->file_->row(row);
 }
 

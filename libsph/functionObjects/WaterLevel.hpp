@@ -25,6 +25,9 @@ template <int D>
 class WaterLevel : public SampledFunctionObject<D> {
  public:
   WaterLevel(const std::string& name, const Dictionary& dict);
+  // A gauge of another type (waveGauge) whose keys the caller reads.
+  WaterLevel(const std::string& name, const std::string& type, const Dictionary& dict, std::vector<Vec<D>> points,
+             double minKernelSum);
   const std::vector<Vec<D>>& points() const { return points_; }
   // Height of the water above each gauge point (m).
   const std::vector<double>& evaluate(const FlowState<D>& s);
@@ -33,10 +36,15 @@ class WaterLevel : public SampledFunctionObject<D> {
   std::string details() const override;
   void open(const FlowState<D>& s, const RunInfo& info) override;
   void sample(const FlowState<D>& s, const RunInfo& info) override;
+  virtual std::string fileComment() const;
+  double threshold() const { return minKernelSum_; }
+  std::vector<Vec<D>> points_;
+  // The file, its columns' prefix, and what is added to each height before it is written.
+  std::string fileName_ = "height.dat", columnPrefix_ = "point";
+  double offset_ = 0;
 
  private:
   double height(const FlowState<D>& s, const Vec<D>& foot);
-  std::vector<Vec<D>> points_;
   double minKernelSum_ = 0.5;
   std::vector<double> heights_;
   std::vector<Vec<D>> near_;  // offsets x_j - x_g of the fluid particles within 2h of a line

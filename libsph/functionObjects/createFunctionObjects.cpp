@@ -1,6 +1,6 @@
 // The function-object factory (docs/design.md 1.3): one object per entry of the
 // controlDict `functions { <name> { type <type>; ... } }`, built only when listed.
-// Reads (controlDict): functions { <name> { type probes|densityError|conservation|fluidExtent|flux|wallPressure|waterLevel|timing; ... } }
+// Reads (controlDict): functions { <name> { type probes|densityError|conservation|fluidExtent|flux|wallPressure|waterLevel|waveGauge|timing; ... } }
 #include "core/Parameter.hpp"
 #include "functionObjects/Conservation.hpp"
 #include "functionObjects/DensityError.hpp"
@@ -11,12 +11,13 @@
 #include "functionObjects/Timing.hpp"
 #include "functionObjects/WallPressure.hpp"
 #include "functionObjects/WaterLevel.hpp"
+#include "functionObjects/WaveGauge.hpp"
 #include <set>
 
 namespace shizuku {
 
 std::vector<std::string> functionObjectTypes() {
-  return {"probes", "densityError", "conservation", "fluidExtent", "flux", "wallPressure", "waterLevel", "timing"};
+  return {"probes", "densityError", "conservation", "fluidExtent", "flux", "wallPressure", "waterLevel", "waveGauge", "timing"};
 }
 
 namespace {
@@ -37,6 +38,7 @@ std::unique_ptr<FunctionObject<D>> createFunctionObject(const std::string& name,
   if (type == "flux") return std::make_unique<Flux<D>>(name, dict);
   if (type == "wallPressure") return std::make_unique<WallPressure<D>>(name, dict, walls);
   if (type == "waterLevel") return std::make_unique<WaterLevel<D>>(name, dict);
+  if (type == "waveGauge") return std::make_unique<WaveGauge<D>>(name, dict);
   return std::make_unique<Timing<D>>(name, dict);
 }
 
@@ -48,7 +50,7 @@ std::vector<std::unique_ptr<FunctionObject<D>>> createFunctionObjects(const Dict
   for (const auto& name : functions->keys()) {
     if (!functions->isDict(name))
       functions->error(name, "a function object is a dictionary { type <type>; ... } (types: probes densityError "
-                             "conservation fluidExtent flux wallPressure waterLevel timing)");
+                             "conservation fluidExtent flux wallPressure waterLevel waveGauge timing)");
     if (name.find('/') != std::string::npos || name == "." || name == "..")
       functions->error(name, "a function-object name names a folder: no '/', '.' or '..'");
     list.push_back(createFunctionObject<D>(name, functions->subDict(name), walls));

@@ -37,6 +37,29 @@ void checkPeriodicLength(const Dictionary& particlesDict, const FlowState<D>& s)
   }
 }
 
+// The moving walls of a restart: the saved particles carry each moving wall particle's
+// rest position and motion (written by a run of a case with motions). A case without
+// motions drops the fields (its walls stay where they are).
+template <int D>
+void checkMotionFields(const CaseFiles& files, const std::string& startName, ParticleSet<D>& P, std::size_t motions) {
+  if (motions == 0) {
+    P.restPosition.clear();
+    P.motion.clear();
+    return;
+  }
+  const std::string where = "time directory '" + files.dir + "/" + startName + "'";
+  if (P.motion.empty() || P.restPosition.empty())
+    files.particlesDict.error("regions", "a wall region has a motion, but " + where +
+                                             " holds no moving-wall fields (restPosition, motion): it was written by "
+                                             "the case without motions; start from particlesDict (startFrom startTime "
+                                             "with no time directory) to build the moving walls");
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.motion[i] > motions || (P.motion[i] > 0 && !P.isWall(i)))
+      files.particlesDict.error("regions", cat(where, ": particle id ", P.id[i], " has motion ", int(P.motion[i]),
+                                               ", but the case has ", motions, " moving wall region(s) and only "
+                                               "wall particles move: the saved time belongs to another case"));
+}
+
 }  // namespace
 
 template <int D>
@@ -70,13 +93,15 @@ NumericalScheme<D> CaseSetup<D>::readScheme(const CaseFiles& files, FlowState<D>
 template <int D>
 std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunControl& rc, bool postProcessing,
                                            FlowState<D>& s, std::vector<WallBox<D>>& walls,
-                                           std::vector<OpenBoundaryRegion<D>>& openRegions) {
+                                           std::vector<OpenBoundaryRegion<D>>& openRegions,
+                                           std::vector<std::shared_ptr<WallMotion<D>>>& motions) {
   // The generator always reads particlesDict (it checks it and gives the periodic box);
   // its particles are used when the start time has none.
   GeneratedParticles<D> gen = generateParticles<D>(files.particlesDict);
   s.periodic = gen.periodic;
   walls = gen.walls;
   openRegions = gen.openBoundaries;
+  motions = gen.motions;
   s.hasOpenBoundaries = !openRegions.empty();
   checkPeriodicLength(files.particlesDict, s);
   const auto times = listTimeDirectories(files.dir);
@@ -100,7 +125,8 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
     s.particles = std::move(gen.set);
     const auto& world = Communicator::world();
     const std::size_t n = s.particles.size(), part = std::size_t(world.rank()), parts = std::size_t(world.size());
-    s.particles.keepRange(n * part / parts, n * (part + 1) / parts);  // this rank's share    s.particles.rho0 = s.rho0;
+    s.particles.keepRange(n * part / parts, n * (part + 1) / parts);  // this rank's share
+    s.particles.rho0 = s.rho0;
     s.particles.spacing = s.d0;
     // Mass calibrated on the initial lattice so that <rho> = rho there (docs/method.md 2).
     s.particles.mass = s.rho0 / s.kernel.latticeSum(s.d0);
@@ -115,6 +141,7 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
         throw InputError("the run starts from particlesDict, so it must write time directory '" + files.dir + "/" +
                          startName + "' first: " + why);
   }
+  if (!startName.empty()) checkMotionFields(files, startName, s.particles, motions.size());
   if (std::abs(s.particles.spacing - s.d0) > 1e-12 * s.d0)
     files.particlesDict.error("spacing", cat("differs from the spacing of the saved particles (",
                                             s.particles.spacing, " m)"));

@@ -12,6 +12,7 @@
 #include "isph/IsphStep.hpp"
 #include "particles/OpenBoundaryRegion.hpp"
 #include "particles/WallBox.hpp"
+#include "particles/WallMotion.hpp"
 
 namespace shizuku {
 
@@ -30,11 +31,13 @@ struct CaseSetup {
   static NumericalScheme<D> readScheme(const CaseFiles& files, FlowState<D>& s);
   // The initial particles and time into the state, per-particle arrays sized; returns the
   // name of the start time; the wall regions into `walls`, the inlets and outlets into
-  // `openRegions` (FlowState::hasOpenBoundaries set when there are any). postProcessing:
-  // only the particlesDict checks, no start time.
+  // `openRegions` (FlowState::hasOpenBoundaries set when there are any), the moving walls'
+  // motions into `motions` (indexed by WallBox::motion and the particle field `motion`).
+  // postProcessing: only the particlesDict checks, no start time.
   static std::string readInitialState(const CaseFiles& files, const RunControl& rc, bool postProcessing,
                                       FlowState<D>& s, std::vector<WallBox<D>>& walls,
-                                      std::vector<OpenBoundaryRegion<D>>& openRegions);
+                                      std::vector<OpenBoundaryRegion<D>>& openRegions,
+                                      std::vector<std::shared_ptr<WallMotion<D>>>& motions);
 };
 
 }  // namespace shizuku

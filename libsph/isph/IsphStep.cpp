@@ -182,6 +182,7 @@ void IsphStep<D>::advect() {
     P.position[i] += dt * (extra ? Vec<D>(P.velocity[i] + du_[i]) : P.velocity[i]);
     if (s_.periodic.any()) s_.periodic.wrap(P.position[i]);
   }
+  if (movingWalls_) movingWalls_->place(P, s_.time + dt);
   s_.exchange(P.position);
 }
 
@@ -208,6 +209,8 @@ void IsphStep<D>::shift() {
 template <int D>
 void IsphStep<D>::advance(double dt) {
   s_.dt = dt;
+  // A moving wall shows the fluid its velocity at the step's end (docs/method.md 11.1).
+  if (movingWalls_) movingWalls_->prescribeVelocity(s_.particles, s_.time + dt);
   predict();
   solvePressure();
   correct();
@@ -274,7 +277,10 @@ std::vector<std::string> IsphStep<D>::describe() const {
   line(cat("pressure Poisson equation: source rho/dt <div u*> (eq. 6), ", scheme_.ppe->solver().describe()));
   for (const auto& e : effects_.pressureSources) line(cat("  + ", e->name(), " (", e->describe(), ")"));
   line("corrector: u = u* - dt/rho <grad p> (eq. 5)");
-  line("advection: r = r + dt u (eq. 7)");
+  line(movingWalls_ ? "advection: r = r + dt u (eq. 7); moving walls to their pose at t + dt"
+                    : "advection: r = r + dt u (eq. 7)");
+  if (movingWalls_)
+    for (const auto& l : movingWalls_->describe()) line(l);
   for (const auto& e : effects_.advectionVelocities) line(cat(e->name(), " (", e->describe(), ")"));
   for (const auto& e : effects_.positionCorrections) line(cat(e->name(), " (", e->describe(), ")"));
   if (effects_.shifting) {

@@ -15,6 +15,7 @@
 // Reads no dictionary keys (CaseSetup builds its parts).
 #pragma once
 #include "core/StageTimers.hpp"
+#include "boundaries/MovingWalls.hpp"
 #include "decomposition/DomainDecomposition.hpp"
 #include "effects/EffectSet.hpp"
 #include "pressure/PressureEquation.hpp"
@@ -71,6 +72,10 @@ class IsphStep {
     particleCountChanged();
   }
 
+  // The moving walls (kept by the caller; nullptr: none): their velocities are set to the
+  // step's end at its start, their positions with the fluid's advection.
+  void setMovingWalls(MovingWalls<D>* m) { movingWalls_ = m; }
+  MovingWalls<D>* movingWalls() const { return movingWalls_; }
   const EffectSet<D>& effects() const { return effects_; }
   const NumericalScheme<D>& scheme() const { return scheme_; }
   StepReport& report() { return report_; }
@@ -107,6 +112,7 @@ class IsphStep {
   EffectNeeds needs_;
   std::unique_ptr<NeighbourSearch<D>> search_;
   DomainDecomposition<D>* decomposition_;
+  MovingWalls<D>* movingWalls_ = nullptr;
   StageTimers& timers_;
   struct StageIds { int decomposition, neighbours, density, freeSurface, surfaceFit, weights, predictor, ppeAssembly, ppeSolve,
                     corrector, advection, positionCorrections; } st_{};

@@ -108,7 +108,8 @@ void Outflow<D>::logRemoved(const FlowState<D>& s) {
 
 template <int D>
 void Outflow<D>::checkLeaks(const FlowState<D>& s, const std::vector<Vec<D>>& previous, HealthGuard<D>& guard) {
-  leaks_.find(s.particles, previous, s.periodic, found_);
+  if (moving_) leaks_.find(s.particles, previous, s.periodic, found_, moving_->poses(), moving_->previousPoses());
+  else leaks_.find(s.particles, previous, s.periodic, found_);
   if (found_.empty()) return;
   using F = PostProcessingFile;
   const auto& P = s.particles;

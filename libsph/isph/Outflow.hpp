@@ -18,6 +18,7 @@
 #pragma once
 #include "boundaries/Domain.hpp"
 #include "boundaries/LeakDetector.hpp"
+#include "boundaries/MovingWalls.hpp"
 #include "boundaries/OpenBoundaries.hpp"
 #include "io/PostProcessingFile.hpp"
 #include "isph/HealthGuard.hpp"
@@ -37,6 +38,8 @@ class Outflow {
   // Returns whether particles were removed or added, or changed type (the caller
   // refreshes the step's arrays).
   bool afterStep(FlowState<D>& s, const std::vector<Vec<D>>& previous, HealthGuard<D>& guard);
+  // The moving walls (their poses for the leak test; nullptr: none), kept by the caller.
+  void setMovingWalls(const MovingWalls<D>* m) { moving_ = m; }
   long leakCount() const { return leakCount_; }
   const Domain<D>& domain() const { return domain_; }
   const OpenBoundaries<D>* openBoundaries() const { return open_.get(); }
@@ -50,6 +53,7 @@ class Outflow {
   Domain<D> domain_;
   LeakDetector<D> leaks_;
   std::unique_ptr<OpenBoundaries<D>> open_;
+  const MovingWalls<D>* moving_ = nullptr;
   std::string caseDir_, startTimeName_;
   double initialMass_ = 0;
   long leakCount_ = 0;

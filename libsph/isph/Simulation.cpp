@@ -21,21 +21,26 @@ Simulation<D>::Simulation(const std::string& caseDir, const SimulationOptions& o
   guard_ = std::make_unique<HealthGuard<D>>(files_.controlDict);
   std::vector<WallBox<D>> walls;
   std::vector<OpenBoundaryRegion<D>> openRegions;
-  startTimeName_ = CaseSetup<D>::readInitialState(files_, rc_, opt_.postProcessing, s_, walls, openRegions);
+  std::vector<std::shared_ptr<WallMotion<D>>> motions;
+  startTimeName_ = CaseSetup<D>::readInitialState(files_, rc_, opt_.postProcessing, s_, walls, openRegions, motions);
+  std::vector<WallBox<D>> domainWalls = walls;
+  if (!motions.empty()) buildMovingWalls(std::move(motions), domainWalls);
   guard_->setLimits(s_, physics.g);
-  Domain<D> domain = Domain<D>::read(files_.controlDict, walls, s_.particles);
+  Domain<D> domain = Domain<D>::read(files_.controlDict, domainWalls, s_.particles);
   std::unique_ptr<OpenBoundaries<D>> open;
   if (!openRegions.empty()) {
     open = std::make_unique<OpenBoundaries<D>>(std::move(openRegions), s_, domain);
     open->prescribe(s_);
   }
   outflow_ = std::make_unique<Outflow<D>>(std::move(domain), walls, std::move(open));
+  outflow_->setMovingWalls(movingWalls_.get());
   EffectSet<D> effects = EffectSet<D>::build(files_.gravity ? &*files_.gravity : nullptr, files_.physicalProperties,
                                              physics.nu, files_.sphSchemes, s_);
   const DecompositionSettings decomposition =
       DecompositionSettings::read(files_.decomposeParDict ? &*files_.decomposeParDict : nullptr);
   if (Communicator::world().isParallel()) distribute(decomposition);
   step_ = std::make_unique<IsphStep<D>>(s_, std::move(scheme), std::move(effects), timers_, decomposition_.get());
+  step_->setMovingWalls(movingWalls_.get());
   if (opt_.functionObjects && !opt_.postProcessing)
     functionObjects_ = createFunctionObjects<D>(files_.controlDict.subDictPtr("functions"), walls);
   else if (const Dictionary* f = files_.controlDict.subDictPtr("functions"))
@@ -45,6 +50,22 @@ Simulation<D>::Simulation(const std::string& caseDir, const SimulationOptions& o
 
 template <int D>
 Simulation<D>::~Simulation() = default;
+
+// The moving walls, placed at the start time (a restart recomputes the positions it read,
+// to the same values); the domain's default bounds take the boxes they sweep to endTime.
+template <int D>
+void Simulation<D>::buildMovingWalls(std::vector<std::shared_ptr<WallMotion<D>>> motions,
+                                     std::vector<WallBox<D>>& domainWalls) {
+  std::vector<std::string> names(motions.size());
+  for (auto& w : domainWalls) {
+    if (w.motion < 0) continue;
+    names[std::size_t(w.motion)] = w.name;
+    MovingWalls<D>::sweptBox(w, *motions[std::size_t(w.motion)], s_.time, std::max(s_.time, rc_.endTime), w.outerMin,
+                             w.outerMax);
+  }
+  movingWalls_ = std::make_unique<MovingWalls<D>>(std::move(motions), std::move(names));
+  movingWalls_->place(s_.particles, s_.time);
+}
 
 // Every rank has read or generated the whole set: each keeps its own particles and the
 // halo (docs/parallel.md 3).

@@ -64,12 +64,14 @@ class Simulation {
 
  private:
   void distribute(const DecompositionSettings& settings);
+  void buildMovingWalls(std::vector<std::shared_ptr<WallMotion<D>>> motions, std::vector<WallBox<D>>& domainWalls);
   CaseFiles files_;
   SimulationOptions opt_;
   RunControl rc_;
   FlowState<D> s_;
   StageTimers timers_;
   std::unique_ptr<DomainDecomposition<D>> decomposition_;  // a distributed run's
+  std::unique_ptr<MovingWalls<D>> movingWalls_;            // the case's moving walls (null: none)
   std::unique_ptr<IsphStep<D>> step_;
   std::unique_ptr<HealthGuard<D>> guard_;
   std::unique_ptr<Outflow<D>> outflow_;

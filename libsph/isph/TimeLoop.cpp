@@ -50,8 +50,20 @@ double TimeLoop<D>::chooseDeltaT(double previous, double nextWrite) {
     umax = world.max(umax);
     TimeStepLimit effects = step_.effects().timeStepLimit(s_);
     effects.dt = world.min(effects.dt);
+    // Moving walls: their Courant number as the fluid's, their acceleration as a force's
+    // (at the step's start and at its end with the previous step).
+    double wallSpeed = 0, wallAcceleration = 0;
+    if (auto* walls = step_.movingWalls())
+      for (double t : {s_.time, s_.time + previous}) {
+        double u = 0, a = 0;
+        walls->extremes(s_.particles, s_.numOwned(), t, u, a);
+        wallSpeed = std::max(wallSpeed, world.max(u));
+        wallAcceleration = std::max(wallAcceleration, world.max(a));
+      }
     const TimeStepLimit lim[] = {
         {umax > 0 ? rc_.maxCo * s_.h / umax : INFINITY, "CFL"},
+        {wallSpeed > 0 ? rc_.maxCo * s_.h / wallSpeed : INFINITY, "wallSpeed"},
+        {wallAcceleration > 0 ? 0.25 * std::sqrt(s_.h / wallAcceleration) : INFINITY, "wallAcceleration"},
         effects,
         {rc_.maxDeltaT, "maxDeltaT"},
         {previous > 0 ? 1.2 * previous : rc_.deltaT, "growth"},

@@ -13,7 +13,7 @@ namespace shizuku {
 
 // The candidates chooseDeltaT compared, kept for the message (no allocation per step).
 struct TimeStepChoice {
-  std::array<TimeStepLimit, 6> limits{};
+  std::array<TimeStepLimit, 8> limits{};
   int count = 0;
   void clear() { count = 0; }
   void add(const TimeStepLimit& l) { if (count < int(limits.size())) limits[count++] = l; }

@@ -13,6 +13,7 @@
 #include "particles/ShapeRegion.hpp"
 #include "particles/VelocityExpression.hpp"
 #include "particles/WallLattice.hpp"
+#include "particles/WallMotion.hpp"
 #include "core/Log.hpp"
 #include "core/Parameter.hpp"
 #include <algorithm>
@@ -101,6 +102,7 @@ struct Region {
   std::array<bool, 2 * D> open{};         // wall faces -x +x -y +y -z +z
   Vec<D> outerMin = Vec<D>::Zero(), outerMax = Vec<D>::Zero();  // wall: surface grown by the layers
   std::vector<Vec<D>> points;
+  std::shared_ptr<WallMotion<D>> motion;  // wall: its prescribed motion (null: fixed)
 
   // Inside the wall's layer region: within the grown box, not strictly inside the surface
   // (a container); strictly inside the box (a solid box); phi < -tol (a curved or STL solid).
@@ -205,7 +207,7 @@ template <int D>
 Region<D> readFluid(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
                     double limit, const std::string& caseDir) {
   Region<D> reg = newRegion<D>(r, name, true);
-  for (const char* k : {"layers", "open"})
+  for (const char* k : {"layers", "open", "motion"})
     if (hasKey<D>(r, k)) r.error(k, std::string("only wall regions take '") + k + "'");
   const std::string kind = shape.read(r);
   if (kind == "cylinder" || kind == "stl") {
@@ -306,7 +308,10 @@ template <int D>
 Region<D> readWall(const Dictionary& r, const std::string& name, double d0, const Dictionary& regions,
                    double limit, const std::string& caseDir) {
   Region<D> reg = newRegion<D>(r, name, false);
-  if (hasKey<D>(r, "velocity")) r.error("velocity", "wall regions are fixed; velocity is for fluid regions only");
+  if (hasKey<D>(r, "velocity"))
+    r.error("velocity", "a wall's velocity comes from its motion (`motion { type ...; }`); velocity is for fluid regions");
+  if (const Dictionary* m = r.subDictPtr("motion")) reg.motion = WallMotion<D>::read(*m, caseDir);
+  else if (hasKey<D>(r, "motion")) r.error("motion", "expected a sub-dictionary: motion { type translation|oscillating|rotation; ... }");
   const std::string kind = shape.read(r);
   if (kind != "box") return readSolidBody<D>(r, reg, kind, d0, regions, limit, caseDir);
   readBox<D>(r, reg, d0);
@@ -599,22 +604,28 @@ void checkTotalCount(const Dictionary& regionsDict, const std::vector<Region<D>>
 }
 
 // The wall particles of every wall region, in file order, without duplicates: a particle
-// closer than d0/2 to an earlier one (where boxes meet) is dropped.
+// closer than d0/2 to an earlier one (where boxes meet) is dropped, unless the two move
+// differently (a moving wall keeps all its particles; group: the motion's index + 1, 0 fixed).
 // A curved or STL solid reports how many of its particles were dropped (it meets another
 // wall: a cylinder on a floor).
 template <int D>
-void fillWalls(std::vector<Region<D>>& walls, double d0, std::vector<Vec<D>>& wallPoints, PointGrid<D>& wallGrid) {
+void fillWalls(std::vector<Region<D>>& walls, double d0, std::vector<Vec<D>>& wallPoints, PointGrid<D>& wallGrid,
+               std::vector<std::uint8_t>& wallGroup) {
   const double tol = kSlack * d0;
+  int moving = 0;
   for (auto& w : walls) {
     fillWall(w, d0);
+    const std::uint8_t group = w.motion ? std::uint8_t(++moving) : 0;
     wallPoints.reserve(wallPoints.size() + w.points.size());
     std::size_t dropped = 0;
     for (const auto& x : w.points) {
-      if (wallGrid.anyCloserThan(x, 0.5 * d0 - tol)) {
+      const Index near = wallGrid.closest(x, 0.5 * d0 - tol);
+      if (near >= 0 && wallGroup[std::size_t(near)] == group) {
         ++dropped;
         continue;
       }
       wallPoints.push_back(x);
+      wallGroup.push_back(group);
       wallGrid.insert(Index(wallPoints.size() - 1));
     }
     if (w.body.shape && dropped > 0)
@@ -806,10 +817,14 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
       fluids.push_back(readFluid<D>(r, name, d0, regionsDict, limit, caseDir));
     else if (type == "wall")
       walls.push_back(readWall<D>(r, name, d0, regionsDict, limit, caseDir));
+    else if (hasKey<D>(r, "motion"))
+      r.error("motion", "only wall regions move; an " + type + " stays where particlesDict puts it");
     else
       openNames.push_back(name);
   }
   if (fluids.empty()) regionsDict.error("regions", "no fluid region (a region with 'type fluid;') is defined");
+  if (std::count_if(walls.begin(), walls.end(), [](const Region<D>& w) { return bool(w.motion); }) > 255)
+    regionsDict.error("regions", "more than 255 wall regions have a motion");
   checkTotalCount<D>(regionsDict, fluids, walls, d0, limit);
   for (std::size_t b = 0; b < fluids.size(); ++b)
     for (std::size_t a = 0; a < b; ++a)
@@ -819,8 +834,9 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
 
   // 2. Wall particles; a particle closer than d0/2 to an earlier one is dropped.
   std::vector<Vec<D>> wallPoints;
+  std::vector<std::uint8_t> wallGroup;
   PointGrid<D> wallGrid(0.5 * d0, wallPoints);
-  fillWalls<D>(walls, d0, wallPoints, wallGrid);
+  fillWalls<D>(walls, d0, wallPoints, wallGrid, wallGroup);
 
   // 3. Fluid particles, minus those inside or next to a wall; velocities.
   std::vector<Vec<D>> fluidPoints, fluidVelocity;
@@ -830,8 +846,13 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
   fillOpenBoundaries<D>(regionsDict, out.openBoundaries, fluidPoints, fluidVelocity, wallGrid, d0, openPoints,
                         openVelocity, openType);
   dict.checkAllRead();
-  for (const auto& w : walls)
+  for (const auto& w : walls) {
     out.walls.push_back({w.name, w.min, w.max, w.outerMin, w.outerMax, w.open, w.layers, d0, w.solid, w.body.shape});
+    if (w.motion) {
+      out.walls.back().motion = int(out.motions.size());
+      out.motions.push_back(w.motion);
+    }
+  }
 
   // 4. The particle set: fluid first, then walls, then inlet and outlet buffers. (A
   // disc's count was estimated from its area; the exact count is checked here.)
@@ -855,6 +876,14 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
     set.id[i] = i;
   }
   set.nextId = std::int64_t(n);
+  if (!out.motions.empty()) {  // the moving walls' rest positions and motions
+    set.restPosition.assign(n, Vec<D>::Zero());
+    set.motion.assign(n, 0);
+    for (std::size_t i = nf; i < nf + nw; ++i) {
+      set.restPosition[i] = set.position[i];
+      set.motion[i] = wallGroup[i - nf];
+    }
+  }
   return out;
 }
 

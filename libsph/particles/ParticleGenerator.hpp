@@ -73,7 +73,12 @@
 //   layers: left right bottom top (-x +x -y +y), in 3D also front back
 //   (-z +z); on an open side the other walls end at the box edge. Wall particles
 //   closer than 0.5 d0 to an earlier wall particle are dropped (walls that
-//   share layers do not double them). Wall velocity is 0.
+//   share layers do not double them; a moving wall's particles are compared only with
+//   those of walls that move the same way). Wall velocity is 0.
+//   `motion { type translation|oscillating|rotation; ... }` (any wall shape; WallMotion.hpp)
+//   makes the region move: its particles get the fields restPosition (where they are
+//   built) and motion (the index of the region's motion + 1); the run moves them
+//   (boundaries/MovingWalls.hpp). `motion` on a fluid, inlet or outlet region is an error.
 //   `solid yes` makes the box a solid body (an obstacle) instead of a container: its
 //   layers lie INSIDE the surface box, on the box's own lattice min + (i + 1/2) s_k
 //   (s_k = L_k / ceil(L_k/d0) <= d0, d0 on a whole number of spacings), the points
@@ -123,6 +128,7 @@
 #include "particles/OpenBoundaryRegion.hpp"
 #include "particles/ParticleSet.hpp"
 #include "particles/WallBox.hpp"
+#include "particles/WallMotion.hpp"
 
 namespace shizuku {
 
@@ -132,6 +138,7 @@ struct GeneratedParticles {
   PeriodicBox<D> periodic;
   std::vector<WallBox<D>> walls;  // the wall regions, in file order
   std::vector<OpenBoundaryRegion<D>> openBoundaries;  // inlets and outlets, in file order
+  std::vector<std::shared_ptr<WallMotion<D>>> motions;  // the moving walls' motions, in file order
 };
 
 // Default of the `maxParticles` keyword.

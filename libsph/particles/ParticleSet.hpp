@@ -24,6 +24,8 @@ struct ParticleSet {
   // --- optional (empty when no active effect needs them) -------------------
   std::vector<Vec<D>> normal;       // outward unit normal near the free surface
   std::vector<Vec<D>> shift;        // last particle shift delta r (m)
+  std::vector<Vec<D>> restPosition; // moving wall particles: where particlesDict built them (m)
+  std::vector<std::uint8_t> motion; // moving wall particles: their motion's index + 1 (0: fixed)
 
   double mass = 0;        // particle mass (kg, or kg/m in 2D), calibrated on the initial lattice
   double rho0 = 1000;     // reference density
@@ -42,6 +44,7 @@ struct ParticleSet {
   template <class F> void forEachField(F&& f) {
     f("U", velocity); f("p", pressure); f("rhoN", density); f("type", type);
     f("surface", surface); f("id", id); f("normal", normal); f("shift", shift);
+    f("restPosition", restPosition); f("motion", motion);
   }
   template <class F> void forEachField(F&& f) const {
     const_cast<ParticleSet*>(this)->forEachField(

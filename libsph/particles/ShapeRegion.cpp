@@ -77,12 +77,12 @@ void checkUnits(const Dictionary& r, const std::string& path, const Vec<3>& lo, 
                         "a part drawn in millimetres needs `scale 0.001;`");
 }
 
-std::string resolvePath(const std::string& caseDir, const std::string& file) {
+}  // namespace
+
+std::string resolveCasePath(const std::string& caseDir, const std::string& file) {
   const std::filesystem::path p(file);
   return p.is_absolute() || caseDir.empty() ? file : (std::filesystem::path(caseDir) / p).string();
 }
-
-}  // namespace
 
 template <int D>
 ShapeRegion<D> ballRegion(const Vec<D>& centre, double radius) {
@@ -110,7 +110,7 @@ ShapeRegion<D> readStlRegion(const Dictionary& r, double d0, double reach, doubl
   } else {
     const std::string file = r.getWord(key::file.keyword());
     recordParameter(key::file.info(), &r, file, false);
-    const std::string path = resolvePath(caseDir, file);
+    const std::string path = resolveCasePath(caseDir, file);
     StlMesh mesh;
     const std::string why = readStl(path, mesh);
     if (!why.empty()) r.error("file", "the STL file '" + path + "' " + why);

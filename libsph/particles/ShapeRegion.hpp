@@ -21,6 +21,9 @@
 
 namespace shizuku {
 
+// A file named in a case dictionary: relative to the case directory, or absolute.
+std::string resolveCasePath(const std::string& caseDir, const std::string& file);
+
 template <int D>
 struct ShapeRegion {
   std::shared_ptr<const SolidShape<D>> shape;

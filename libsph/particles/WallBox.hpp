@@ -12,6 +12,9 @@
 //                        solid): its shape (SolidShape.hpp); min, max, outerMin, outerMax
 //                        are its bounding box and its layers lie within `layers` d0 inside
 //                        its surface; null for a box
+//   motion:              the index of the region's motion in GeneratedParticles::motions (-1:
+//                        fixed); the fields above are its rest position, where particlesDict
+//                        builds it
 //   covered:             a solid box's faces that lie against another wall (an obstacle's
 //                        bottom on the tank's floor): fluid cannot reach the box through
 //                        them, so depth inside the box is measured from its other faces
@@ -42,6 +45,7 @@ struct WallBox {
   bool solid = false;
   std::shared_ptr<const SolidShape<D>> body;
   std::array<bool, 2 * D> covered{};
+  int motion = -1;
 
   // Inside the layer region deeper than `depth` past the surface: within the outer box,
   // more than `depth` outside the surface box across a closed face k, and more than

@@ -496,7 +496,12 @@ BOOST_AUTO_TEST_CASE(input_errors) {
   CHECK_ERROR(2, "spacing 0.1; regions { f { type fluid; " + box + " layers 2; } }", "keyword 'layers'",
               "only wall regions");
   CHECK_ERROR(2, "spacing 0.1; regions { f { type fluid; " + box + " }\n w { type wall; shape box; min (0 0); max (2 2); velocity { type uniform; value (1 0); } } }",
-              "keyword 'velocity'", "wall regions are fixed");
+              "keyword 'velocity'", "comes from its motion");
+  // motion: only wall regions move
+  CHECK_ERROR(2, "spacing 0.1; regions { f { type fluid; " + box + " motion { type oscillating; amplitude (0.1 0); period 1; } } }",
+              "keyword 'motion'", "only wall regions");
+  CHECK_ERROR(2, "spacing 0.1; regions { f { type fluid; " + box + " }\n w { type wall; shape box; min (0 0); max (2 2); motion 3; } }",
+              "keyword 'motion'", "expected a sub-dictionary");
   CHECK_ERROR(2, "spacing 0.1; regions { f { type fluid; " + box + " }\n w { type wall; shape box; min (0 0); max (2 2); open (tpo); } }",
               "keyword 'open'", "'tpo' is not a face", "did you mean 'top'?");
   CHECK_ERROR(2, "spacing 0.1; regions { f { type fluid; " + box + " }\n w { type wall; shape box; min (0 0); max (2 2); open (front); } }",

@@ -1,0 +1,96 @@
+// The moving wall regions at run time: see MovingWalls.hpp.
+#include "boundaries/MovingWalls.hpp"
+#include "core/Log.hpp"
+#include <algorithm>
+#include <cmath>
+
+namespace shizuku {
+
+template <int D>
+MovingWalls<D>::MovingWalls(std::vector<std::shared_ptr<WallMotion<D>>> motions, std::vector<std::string> names)
+    : motions_(std::move(motions)), names_(std::move(names)) {
+  now_.resize(motions_.size());
+  before_.resize(motions_.size());
+  scratch_.resize(motions_.size());
+}
+
+template <int D>
+void MovingWalls<D>::evaluate(double t) {
+  for (std::size_t k = 0; k < motions_.size(); ++k) scratch_[k] = motions_[k]->pose(t);
+}
+
+template <int D>
+void MovingWalls<D>::place(ParticleSet<D>& P, double t) {
+  evaluate(t);
+  before_ = placed_ ? now_ : scratch_;
+  now_ = scratch_;
+  placed_ = true;
+  const long n = long(P.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const int m = P.motion[std::size_t(i)];
+    if (m == 0) continue;
+    const Pose<D>& p = now_[std::size_t(m - 1)];
+    P.position[i] = p.position(P.restPosition[i]);
+    P.velocity[i] = p.velocity(P.restPosition[i]);
+  }
+}
+
+template <int D>
+void MovingWalls<D>::prescribeVelocity(ParticleSet<D>& P, double t) {
+  evaluate(t);
+  const long n = long(P.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const int m = P.motion[std::size_t(i)];
+    if (m != 0) P.velocity[i] = scratch_[std::size_t(m - 1)].velocity(P.restPosition[i]);
+  }
+}
+
+template <int D>
+void MovingWalls<D>::extremes(const ParticleSet<D>& P, std::size_t n, double t, double& speed, double& acceleration) {
+  evaluate(t);
+  double u2 = 0, a2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : u2, a2)
+  for (long i = 0; i < long(n); ++i) {
+    const int m = P.motion[std::size_t(i)];
+    if (m == 0) continue;
+    const Pose<D>& p = scratch_[std::size_t(m - 1)];
+    u2 = std::max(u2, p.velocity(P.restPosition[i]).squaredNorm());
+    a2 = std::max(a2, p.acceleration(P.restPosition[i]).squaredNorm());
+  }
+  speed = std::sqrt(u2);
+  acceleration = std::sqrt(a2);
+}
+
+template <int D>
+std::vector<std::string> MovingWalls<D>::describe() const {
+  std::vector<std::string> v;
+  for (std::size_t k = 0; k < motions_.size(); ++k)
+    v.push_back(cat("moving wall '", names_[k], "': ", motions_[k]->describe(),
+                    "; its velocity enters the wall rows (eq. 11a) and the time step"));
+  return v;
+}
+
+template <int D>
+void MovingWalls<D>::sweptBox(const WallBox<D>& w, WallMotion<D>& m, double t0, double t1, Vec<D>& lo, Vec<D>& hi) {
+  constexpr int kSamples = 2001;
+  const Vec<D> outerMin = w.outerMin, outerMax = w.outerMax;  // lo, hi may be w's own
+  lo = Vec<D>::Constant(INFINITY);
+  hi = Vec<D>::Constant(-INFINITY);
+  for (int s = 0; s < kSamples; ++s) {
+    const Pose<D> p = m.pose(t0 + (t1 - t0) * s / (kSamples - 1));
+    for (int c = 0; c < (1 << D); ++c) {
+      Vec<D> corner;
+      for (int k = 0; k < D; ++k) corner[k] = (c >> k) & 1 ? outerMax[k] : outerMin[k];
+      const Vec<D> x = p.position(corner);
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+  }
+}
+
+template class MovingWalls<2>;
+template class MovingWalls<3>;
+
+}  // namespace shizuku

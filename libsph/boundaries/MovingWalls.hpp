@@ -1,0 +1,56 @@
+// The wall regions that move (docs/boundaries.md, "Moving walls"; docs/method.md 11.1),
+// at run time. Built only when a wall region of particlesDict has a `motion`; a case
+// without one builds nothing of this (no field, no loop, no pipeline line).
+//   - place(t):             every moving wall particle to x = R(t) X + b(t) with velocity
+//                           U = R'(t) X + b'(t), X its rest position (the particle field
+//                           `restPosition`, which restarts read back, so a restart continues
+//                           the motion exactly); the poses at t kept for the leak test.
+//   - prescribeVelocity(t): the velocities alone, set at the start of a step to their value
+//                           at its end, t^{n+1}: the wall row's velocity term (eq. 11a) then
+//                           drives the fluid's normal velocity to the wall's at t^{n+1}, and the
+//                           no-slip mirror velocity is the wall's at the step's end.
+//   - the time-step limits: dt <= maxCo h / max|U_w| (the wall's Courant number, as the
+//                           fluid's) and dt <= 0.25 sqrt(h / max|a_w|) (as a body force).
+//   - sweptBox:             the box a wall's outer box sweeps over a time interval, sampled at
+//                           2001 instants, for the domain's default bounds.
+// Particles carry the index of their motion + 1 in the field `motion` (0: fixed).
+// Reads no dictionary keys (WallMotion reads the `motion` sub-dictionaries).
+#pragma once
+#include "particles/ParticleSet.hpp"
+#include "particles/WallBox.hpp"
+#include "particles/WallMotion.hpp"
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace shizuku {
+
+template <int D>
+class MovingWalls {
+ public:
+  // motions[k] moves the particles with field motion == k + 1; names[k] is its region's.
+  MovingWalls(std::vector<std::shared_ptr<WallMotion<D>>> motions, std::vector<std::string> names);
+
+  void place(ParticleSet<D>& P, double t);
+  void prescribeVelocity(ParticleSet<D>& P, double t);
+  // Largest speed and acceleration of this rank's moving wall particles (the first n) at
+  // time t.
+  void extremes(const ParticleSet<D>& P, std::size_t n, double t, double& speed, double& acceleration);
+  // The poses at the last place() and at the one before (equal after the first).
+  const std::vector<Pose<D>>& poses() const { return now_; }
+  const std::vector<Pose<D>>& previousPoses() const { return before_; }
+  // One line per moving region, for the pipeline.
+  std::vector<std::string> describe() const;
+
+  // The bounding box of w's outer box moved by m over [t0, t1].
+  static void sweptBox(const WallBox<D>& w, WallMotion<D>& m, double t0, double t1, Vec<D>& lo, Vec<D>& hi);
+
+ private:
+  void evaluate(double t);
+  std::vector<std::shared_ptr<WallMotion<D>>> motions_;
+  std::vector<std::string> names_;
+  std::vector<Pose<D>> now_, before_, scratch_;
+  bool placed_ = false;
+};
+
+}  // namespace shizuku
