@@ -229,12 +229,14 @@ void WallPressure<D>::buildTerms(const Dictionary& dict) {
   if (terms_.empty()) dict.error("centre", "the sensor covers no wall particle");
 }
 
-// Finds each term's particle by its lattice position (walls never move) among this rank's
-// own particles; in a distributed run the terms are spread over the ranks (id -1: elsewhere).
+// Finds each term's particle by its lattice position among this rank's own particles (a
+// moving wall's by its rest position: the sensor moves with the wall); in a distributed run
+// the terms are spread over the ranks (id -1: elsewhere).
 template <int D>
 void WallPressure<D>::locate(const FlowState<D>& s) {
   const auto& P = s.particles;
   const double tol = 1e-6 * wall_.d0;
+  const auto& X = P.restPosition.empty() ? P.position : P.restPosition;  // rest: every wall particle's
   std::size_t found = 0;
   for (auto& t : terms_) t.id = -1;
   for (std::size_t i = 0; i < s.numOwned(); ++i) {
@@ -243,8 +245,8 @@ void WallPressure<D>::locate(const FlowState<D>& s) {
     bool ok = true;
     for (int k = 0; k < D && ok; ++k) {
       const auto& x = axisNodes_[k];
-      const auto it = std::lower_bound(x.begin(), x.end(), P.position[i][k] - tol);
-      ok = it != x.end() && std::abs(*it - P.position[i][k]) < tol;
+      const auto it = std::lower_bound(x.begin(), x.end(), X[i][k] - tol);
+      ok = it != x.end() && std::abs(*it - X[i][k]) < tol;
       if (ok) idx[k] = long(it - x.begin());
     }
     if (!ok) continue;

@@ -876,7 +876,7 @@ GeneratedParticles<D> generateParticles(const Dictionary& dict, double particleC
     set.id[i] = i;
   }
   set.nextId = std::int64_t(n);
-  if (!out.motions.empty()) {  // the moving walls' rest positions and motions
+  if (!out.motions.empty()) {  // every wall particle's rest position, the moving walls' motions
     set.restPosition.assign(n, Vec<D>::Zero());
     set.motion.assign(n, 0);
     for (std::size_t i = nf; i < nf + nw; ++i) {

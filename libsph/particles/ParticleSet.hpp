@@ -24,7 +24,7 @@ struct ParticleSet {
   // --- optional (empty when no active effect needs them) -------------------
   std::vector<Vec<D>> normal;       // outward unit normal near the free surface
   std::vector<Vec<D>> shift;        // last particle shift delta r (m)
-  std::vector<Vec<D>> restPosition; // moving wall particles: where particlesDict built them (m)
+  std::vector<Vec<D>> restPosition; // wall particles of a case with moving walls: where particlesDict built them (m)
   std::vector<std::uint8_t> motion; // moving wall particles: their motion's index + 1 (0: fixed)
 
   double mass = 0;        // particle mass (kg, or kg/m in 2D), calibrated on the initial lattice
