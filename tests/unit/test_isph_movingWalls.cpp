@@ -147,3 +147,29 @@ BOOST_AUTO_TEST_CASE(restart_continues_a_rolling_tank_bit_for_bit) {
   BOOST_TEST_REQUIRE(!a.empty());
   BOOST_TEST((a == readAll(split.dir() + "/0.06/particles.vtp")));
 }
+
+BOOST_AUTO_TEST_CASE(the_time_step_respects_the_wall_speed) {
+  // Water at rest, no gravity, periodic in x; a solid block above it rises at 2 m/s. The
+  // wall's Courant limit maxCo h / |U_w| = 0.2 x 0.024 / 2 = 0.0024 s is the only limit, so
+  // the run to 0.024 s takes exactly 10 steps (with the limit planted out: 3 steps).
+  test::TempCase c("mwWallSpeed");
+  c.file("system/controlDict",
+         "endTime 0.024; deltaT 0.01; adjustTimeStep yes; maxCo 0.2; maxDeltaT 1;\n"
+         "writeControl timeStep; writeInterval 1000; progressInterval 1000;\n");
+  c.file("system/particlesDict",
+         "spacing 0.02;\nperiodic { min (0 0); max (0.4 1); directions (x); }\n"
+         "regions {\n water { type fluid; shape box; min (0 0); max (0.4 0.2); }\n"
+         " block { type wall; shape box; solid yes; min (0.1 0.4); max (0.3 0.5); layers 2;\n"
+         "   motion { type translation; displacement (\"0\" \"2*t\"); } }\n}\n");
+  c.file("system/sphSchemes", "derivatives SPH2;\nfreeSurface { enabled off; }\n");
+  c.file("system/sphSolution", "pressure { solver UMFPACK; }\n");
+  c.file("constant/physicalProperties", "rho 1000;\n");
+  SimulationOptions opt;
+  opt.functionObjects = false;
+  Log::get().quiet = true;
+  Simulation<2> sim(c.dir(), opt);
+  BOOST_TEST_REQUIRE(sim.run() == 0);
+  Log::get().quiet = false;
+  BOOST_TEST(sim.state().step == 10);
+  BOOST_TEST(sim.state().time == 0.024, boost::test_tools::tolerance(1e-12));
+}

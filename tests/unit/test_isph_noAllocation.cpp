@@ -107,11 +107,12 @@ using namespace shizuku;
 
 namespace {
 
-void writeDamBreak(test::TempCase& c, const std::string& pressure) {
+// `motion`: the tank's motion entry (empty: a fixed tank).
+void writeDamBreak(test::TempCase& c, const std::string& pressure, const std::string& motion = "") {
   c.file("system/controlDict", "endTime 1; deltaT 5e-4; writeControl timeStep; writeInterval 100000;\n");
   c.file("system/particlesDict",
          "spacing 0.02;\nregions {\n column { type fluid; shape box; min (0 0); max (0.3 0.4); }\n"
-         " tank { type wall; shape box; min (0 0); max (0.8 0.6); layers 3; open (top); }\n}\n");
+         " tank { type wall; shape box; min (0 0); max (0.8 0.6); layers 3; open (top); " + motion + " }\n}\n");
   c.file("system/sphSchemes",
          "derivatives SPH2;\n"
          "shifting { distribution { type OPS; C 0.2; Rp 0.2; np 4; } volumeCorrection { C 0.1; }\n"
@@ -123,9 +124,9 @@ void writeDamBreak(test::TempCase& c, const std::string& pressure) {
 }
 
 // Allocations per step after `warmup` steps, counted over `steps` steps.
-long allocationsInSteps(const std::string& pressure, int threads, int warmup, int steps) {
+long allocationsInSteps(const std::string& pressure, int threads, int warmup, int steps, const std::string& motion = "") {
   test::TempCase c("noalloc");
-  writeDamBreak(c, pressure);
+  writeDamBreak(c, pressure, motion);
   SimulationOptions opt;
   opt.functionObjects = false;
   opt.threads = threads;
@@ -193,6 +194,12 @@ BOOST_AUTO_TEST_CASE(the_counter_counts) {
 BOOST_AUTO_TEST_CASE(steps_allocate_nothing_with_ilu0) {
   for (int threads : {2, 1})
     BOOST_TEST(allocationsInSteps("solver BiCGSTAB; preconditioner ILU0;", threads, 40, 20) < kSlack);
+}
+
+BOOST_AUTO_TEST_CASE(steps_allocate_nothing_with_a_rolling_tank) {
+  // The moving walls: their poses, positions and velocities every step.
+  const std::string roll = "motion { type rotation; centre (0.4 0); angle \"5*sin(2*pi*t)\"; }";
+  BOOST_TEST(allocationsInSteps("solver BiCGSTAB; preconditioner ILU0;", 2, 40, 20, roll) < kSlack);
 }
 
 BOOST_AUTO_TEST_CASE(steps_allocate_nothing_with_diagonal) {

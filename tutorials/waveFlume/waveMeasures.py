@@ -111,7 +111,7 @@ def measures(case):
     th = theory(p["h"], p["period"], p["amplitude"])
     t, eta, xs = read_gauges(case)
     out = {"theory": th, "gauges": []}
-    for x, e in zip(xs[:2], eta[:2]):
+    for x, e in zip(xs[:2], eta[:2]):  # the measuring gauges: one and two wavelengths out
         t0 = p["ramp"] + x / th["cg"]
         t1 = t0 + 5 * th["T"]
         Hz, Tz = waves(t, e, t0, t1)
@@ -119,14 +119,15 @@ def measures(case):
         out["gauges"].append({"x": x, "window": (t0, t1), "H": H, "T": T, "zeroCrossingH": Hz.mean(),
                               "zeroCrossingT": Tz.mean(), "count": len(Hz), "complete": t[-1] >= t1})
     # Wavelength: phases at omega over windows one period apart in paddle phase.
-    g0, g1 = out["gauges"][0], out["gauges"][1]
-    shift = th["T"] * math.ceil((g1["window"][0] - g0["window"][0]) / th["T"])
-    Z0 = harmonic(t, eta[0], th["omega"], g0["window"][0], g0["window"][0] + 5 * th["T"])
-    Z1 = harmonic(t, eta[1], th["omega"], g0["window"][0] + shift, g0["window"][0] + shift + 5 * th["T"])
-    dx = xs[1] - xs[0]
-    dphi = math.remainder(np.angle(Z1) - np.angle(Z0), 2 * math.pi)  # Z ~ exp(i k x): phase grows with x
-    n = round(th["k"] * dx / (2 * math.pi))
-    out["L"] = 2 * math.pi / ((2 * math.pi * n + dphi) / dx)
+    if len(xs) >= 2:
+        g0, g1 = out["gauges"][0], out["gauges"][1]
+        shift = th["T"] * math.ceil((g1["window"][0] - g0["window"][0]) / th["T"])
+        Z0 = harmonic(t, eta[0], th["omega"], g0["window"][0], g0["window"][0] + 5 * th["T"])
+        Z1 = harmonic(t, eta[1], th["omega"], g0["window"][0] + shift, g0["window"][0] + shift + 5 * th["T"])
+        dx = xs[1] - xs[0]
+        dphi = math.remainder(np.angle(Z1) - np.angle(Z0), 2 * math.pi)  # Z ~ exp(i k x): phase grows with x
+        n = round(th["k"] * dx / (2 * math.pi))
+        out["L"] = 2 * math.pi / ((2 * math.pi * n + dphi) / dx)
     # Reflection from gauges 1 and 2 over the last five periods.
     if len(xs) >= 3:
         t1 = t[-1]
@@ -150,7 +151,8 @@ def report(label, m):
               f"H = {g['H']:.5f} m ({100 * (g['H'] / th['H'] - 1):+.2f} %), T = {g['T']:.5f} s "
               f"({100 * (g['T'] / th['T'] - 1):+.2f} %); zero crossings: {g['count']} waves, H "
               f"{g['zeroCrossingH']:.5f} m, T {g['zeroCrossingT']:.5f} s")
-    print(f"  wavelength {m['L']:.4f} m ({100 * (m['L'] / th['L'] - 1):+.2f} %)")
+    if "L" in m:
+        print(f"  wavelength {m['L']:.4f} m ({100 * (m['L'] / th['L'] - 1):+.2f} %)")
     if "reflection" in m:
         w = m["reflectionWindow"]
         print(f"  reflection coefficient {m['reflection']:.3f} (gauges 1-2, t = {w[0]:.2f}-{w[1]:.2f} s)")
