@@ -142,6 +142,16 @@ def set_key(path, key, value):
         f.write(with_key(text, key, value))
 
 
+def replace_once(path, old, new):
+    """Replace the one occurrence of `old` in a file by `new` (an error unless it occurs once)."""
+    with open(path) as f:
+        text = f.read()
+    if text.count(old) != 1:
+        raise SystemExit(f"{path}: '{old}' does not occur exactly once")
+    with open(path, "w") as f:
+        f.write(text.replace(old, new))
+
+
 def _entry_match(text, path, entry, key):
     """The match of `key VALUE` inside the one-level sub-dictionary `entry { ... }`."""
     m = re.search(r"(\b" + re.escape(entry) + r"\s*\{[^}]*\b" + re.escape(key) + r"\s+)([^;\s]+)", text)

@@ -153,6 +153,12 @@ def main():
                                                               "particles.pvd"))
     dt, end = shorten(os.path.join(case, "system/controlDict"), a.steps)
     print(f"{name}: shortened to {a.steps} steps of {dt:g} s (endTime {end:g})")
+    # Sub-cases a tutorial's Allrun also runs (tutorials/slosh): shortened the same way.
+    for sub in sorted(os.listdir(case)):
+        control = os.path.join(case, sub, "system", "controlDict")
+        if os.path.isfile(control):
+            shorten(control, a.steps)
+            print(f"{name}/{sub}: shortened to {a.steps} steps")
 
     env = dict(os.environ, SHIZUKU_DIR=os.path.abspath(a.repo), SHIZUKU_BUILD=os.path.abspath(a.build),
                OMP_NUM_THREADS=str(a.threads))

@@ -164,12 +164,7 @@ BOOST_AUTO_TEST_CASE(the_time_step_respects_the_wall_speed) {
   c.file("system/sphSchemes", "derivatives SPH2;\nfreeSurface { enabled off; }\n");
   c.file("system/sphSolution", "pressure { solver UMFPACK; }\n");
   c.file("constant/physicalProperties", "rho 1000;\n");
-  SimulationOptions opt;
-  opt.functionObjects = false;
-  Log::get().quiet = true;
-  Simulation<2> sim(c.dir(), opt);
-  BOOST_TEST_REQUIRE(sim.run() == 0);
-  Log::get().quiet = false;
-  BOOST_TEST(sim.state().step == 10);
-  BOOST_TEST(sim.state().time == 0.024, boost::test_tools::tolerance(1e-12));
+  const auto sim = test::runQuietly<2>(c);
+  BOOST_TEST(sim->state().step == 10);
+  BOOST_TEST(sim->state().time == 0.024, boost::test_tools::tolerance(1e-12));
 }

@@ -9,6 +9,7 @@
 // And: a fixed-step run takes exactly endTime/deltaT steps (no round-off sliver step).
 #define BOOST_TEST_MODULE isph_pipeline
 #include <boost/test/unit_test.hpp>
+#include "../support/RestartRuns.hpp"
 #include "../support/TempCase.hpp"
 #include "core/Log.hpp"
 #include "io/TimeDirectory.hpp"
@@ -138,14 +139,9 @@ BOOST_AUTO_TEST_CASE(fixed_steps_end_on_end_time_without_a_sliver_step) {
   c.file("system/sphSchemes", "derivatives SPH2;\npressureStabilization { type densityInvariant; alpha 1e-3; }\n");
   c.file("system/sphSolution", "pressure { solver UMFPACK; }\n");
   c.file("constant/physicalProperties", "rho 1000; nu 0;\n");
-  SimulationOptions opt;
-  opt.functionObjects = false;
-  Log::get().quiet = true;
-  Simulation<2> sim(c.dir(), opt);
-  BOOST_TEST_REQUIRE(sim.run() == 0);
-  Log::get().quiet = false;
-  BOOST_TEST(sim.state().step == 60000);
-  BOOST_TEST(std::abs(sim.state().time - 6.0) < 1e-9);
+  const auto sim = test::runQuietly<2>(c);
+  BOOST_TEST(sim->state().step == 60000);
+  BOOST_TEST(std::abs(sim->state().time - 6.0) < 1e-9);
   BOOST_TEST(RunControl::landsOn(1e-4, 1e-4 + 4e-11));   // the remainder is merged
   BOOST_TEST(RunControl::landsOn(1e-4, 0.5e-4));          // a shorter target is reached
   BOOST_TEST(!RunControl::landsOn(1e-4, 1.5e-4));         // a real step remains

@@ -114,12 +114,17 @@ def measures(case):
     for x, e in zip(xs[:2], eta[:2]):  # the measuring gauges: one and two wavelengths out
         t0 = p["ramp"] + x / th["cg"]
         t1 = t0 + 5 * th["T"]
+        if t[-1] < t0 + th["T"]:  # not a full period of the window recorded (a smoke test's few steps)
+            out["gauges"].append({"x": x, "window": (t0, t1), "H": float("nan"), "T": float("nan"),
+                                  "zeroCrossingH": float("nan"), "zeroCrossingT": float("nan"), "count": 0,
+                                  "complete": False})
+            continue
         Hz, Tz = waves(t, e, t0, t1)
         H, T = fit_wave(t, e, th["omega"], t0, t1)
         out["gauges"].append({"x": x, "window": (t0, t1), "H": H, "T": T, "zeroCrossingH": Hz.mean(),
                               "zeroCrossingT": Tz.mean(), "count": len(Hz), "complete": t[-1] >= t1})
     # Wavelength: phases at omega over windows one period apart in paddle phase.
-    if len(xs) >= 2:
+    if len(xs) >= 2 and not any(math.isnan(g["H"]) for g in out["gauges"]):
         g0, g1 = out["gauges"][0], out["gauges"][1]
         shift = th["T"] * math.ceil((g1["window"][0] - g0["window"][0]) / th["T"])
         Z0 = harmonic(t, eta[0], th["omega"], g0["window"][0], g0["window"][0] + 5 * th["T"])
@@ -129,7 +134,7 @@ def measures(case):
         n = round(th["k"] * dx / (2 * math.pi))
         out["L"] = 2 * math.pi / ((2 * math.pi * n + dphi) / dx)
     # Reflection from gauges 1 and 2 over the last five periods.
-    if len(xs) >= 3:
+    if len(xs) >= 3 and t[-1] >= 5 * th["T"]:
         t1 = t[-1]
         t0 = t1 - 5 * th["T"]
         Za, Zb = harmonic(t, eta[1], th["omega"], t0, t1), harmonic(t, eta[2], th["omega"], t0, t1)
@@ -174,6 +179,8 @@ def plot(cases, labels, out):
         tt = np.linspace(0, t[-1], 3000)
         arrive = p["ramp"] + x / th["cg"]
         # Linear theory in the window: a sinusoid of height H at the phase of the first case's fit.
+        if t[-1] < arrive + th["T"]:
+            continue
         Z = harmonic(t, eta[j], th["omega"], arrive, arrive + 5 * th["T"])
         amp = th["H"] / 2
         phase = np.angle(Z)

@@ -30,7 +30,7 @@ def run_decay(a, measures, src, name, spacing, end, what, edits=()):
     case = os.path.join(os.path.abspath(a.work), name)
     st.copy_case(src, case)
     for path, old, new in edits:
-        replace(os.path.join(case, path), old, new)
+        st.replace_once(os.path.join(case, path), old, new)
     st.set_key(os.path.join(case, "system", "particlesDict"), "spacing", spacing)
     st.set_key(os.path.join(case, "system", "controlDict"), "endTime", end)
     st.run_or_fail(a.shizuku, case, a.threads, name)
@@ -39,15 +39,6 @@ def run_decay(a, measures, src, name, spacing, end, what, edits=()):
              f"{what}: first-mode period {m['period']:.4f} s within {100 * BOUND:.0f} % of {m['theory']:.4f} s "
              f"({m['error']:+.2f} %)")
     st.check(0.9 <= m["amplitude"] <= 1.15, f"{what}: fitted amplitude {m['amplitude']:.3f} of the linear mode's")
-
-
-def replace(path, old, new):
-    with open(path) as f:
-        text = f.read()
-    if text.count(old) != 1:
-        raise SystemExit(f"{path}: '{old}' not found once")
-    with open(path, "w") as f:
-        f.write(text.replace(old, new))
 
 
 # The thin tank 4 cm broad instead of 8 (and its gauges and sensor on the new mid-plane).

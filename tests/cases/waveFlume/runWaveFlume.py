@@ -14,7 +14,9 @@ bounds: height within 5 %, period within 1 %, wavelength within 3 %.
            gauge one wavelength out, to 12.1 s (about 2 min): its height and period
            (measured +3.7 % and -0.59 % in the 10 m flume);
   --full:  the tutorial's 10 m flume at d0 = 2 cm and at its own 1 cm, both gauges, the
-           wavelength, the damping zone's reflection (printed).
+           wavelength, the damping zone's reflection (printed). Measured 2026-12-03: at 1 cm
+           H +0.07 / -0.61 %, T -0.36 / -1.07 %, L +1.68 %; at 2 cm H +3.73 / -7.24 %, T -0.59 /
+           -1.13 %, L -0.85 %: the far gauge's period fails at both, its height at 2 cm.
 """
 import os
 import sys
@@ -25,22 +27,13 @@ import shizukutest as st  # noqa: E402
 BOUNDS = {"H": 0.05, "T": 0.01, "L": 0.03}
 
 
-def replace(path, old, new):
-    with open(path) as f:
-        text = f.read()
-    if text.count(old) != 1:
-        raise SystemExit(f"{path}: '{old}' not found once")
-    with open(path, "w") as f:
-        f.write(text.replace(old, new))
-
-
 def shorten(case):
     """The 7 m flume: water and walls to 7 m, the damping zone over 4-7 m, one gauge."""
     pd, sch, cd = (os.path.join(case, "system", n) for n in ("particlesDict", "sphSchemes", "controlDict"))
-    replace(pd, "max (10 0.4)", "max (7 0.4)")
-    replace(pd, "max (10 0.7)", "max (7 0.7)")
-    replace(sch, "dampingZone { min (7 -0.1); max (10 1);", "dampingZone { min (4 -0.1); max (7 1);")
-    replace(cd, "positions (2.5133 5.0265 5.4265);", "positions (2.5133);")
+    st.replace_once(pd, "max (10 0.4)", "max (7 0.4)")
+    st.replace_once(pd, "max (10 0.7)", "max (7 0.7)")
+    st.replace_once(sch, "dampingZone { min (7 -0.1); max (10 1);", "dampingZone { min (4 -0.1); max (7 1);")
+    st.replace_once(cd, "positions (2.5133 5.0265 5.4265);", "positions (2.5133);")
 
 
 def run(a, measures, name, spacing, short):
