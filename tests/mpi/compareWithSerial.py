@@ -21,6 +21,9 @@ tutorials' 1e-8 would let the solvers' own differences hide a wrong ghost):
   - channelOpen: the channelPoiseuille tutorial, an inlet and an outlet, 50 steps with its
                 function objects (particles released on every rank take ids unique across
                 the ranks; the particle sets must hold the same ids as serial);
+  - shakenTank: tutorials/slosh/forced at d0 = 2 cm shaken at 2 cm amplitude, period 0.5 s
+                (moving walls crossing the cuts: their poses on every rank, ghosts of
+                moving wall particles), 50 steps from the start;
   - taylorGreen2D, taylorGreen3D: the periodic box of tests/cases/taylorGreen.py at L/20 (in
                 3D six layers, periodic in x, y and z), 50 steps: ghosts across periodic
                 faces, a rank's halo reaching round the box to the other rank.
@@ -214,8 +217,8 @@ def main():
     ap = arguments()
     ap.add_argument("--ranks", type=int, nargs="+", default=[1, 2, 3])
     ap.add_argument("--cases", nargs="+",
-                    default=["damBreak", "rotatingSquarePatch", "channel", "channelOpen", "taylorGreen2D",
-                             "taylorGreen3D"])
+                    default=["damBreak", "rotatingSquarePatch", "channel", "channelOpen", "shakenTank",
+                             "taylorGreen2D", "taylorGreen3D"])
     a = ap.parse_args()
     a.work = os.path.abspath(a.work)
     os.makedirs(a.work, exist_ok=True)
@@ -254,6 +257,17 @@ def main():
         tighten(base)
         set_control(base, 0.5, 0.5)
         run_case(a, "channelOpen", base, None, None, None, 0.0025, functions=True)
+    if "shakenTank" in a.cases:
+        # Moving walls: the forced sloshing tank shaken hard, so that its walls move a
+        # spacing in 50 steps across the ranks' cuts.
+        base = os.path.join(a.work, "shakenTankStart")
+        st.copy_case(os.path.join(tutorials, "slosh", "forced"), base)
+        path = os.path.join(base, "system", "particlesDict")
+        st.set_key(path, "spacing", "0.02")
+        st.replace_once(path, "amplitude (0.005 0); period 1.3; rampTime 2.6;", "amplitude (0.02 0); period 0.5;")
+        tighten(base)
+        set_control(base, 0.05, 0.05)
+        run_case(a, "shakenTank", base, None, None, None, 0.02)
     tg = st.load_module(os.path.join(HERE, "..", "cases", "taylorGreen.py"), "taylorGreen")
     for D in (2, 3):
         name = f"taylorGreen{D}D"
