@@ -74,20 +74,27 @@ std::vector<std::string> MovingWalls<D>::describe() const {
 
 template <int D>
 void MovingWalls<D>::sweptBox(const WallBox<D>& w, WallMotion<D>& m, double t0, double t1, Vec<D>& lo, Vec<D>& hi) {
-  constexpr int kSamples = 2001;
+  // Samples at most 1 ms apart (at least 2001, at most 2e6), and the box padded by the
+  // distance a corner can travel between two samples at the largest speed seen.
+  const long samples = std::clamp(long(std::ceil((t1 - t0) / 1e-3)) + 1, 2001L, 2000001L);
+  const double gap = (t1 - t0) / double(samples - 1);
   const Vec<D> outerMin = w.outerMin, outerMax = w.outerMax;  // lo, hi may be w's own
   lo = Vec<D>::Constant(INFINITY);
   hi = Vec<D>::Constant(-INFINITY);
-  for (int s = 0; s < kSamples; ++s) {
-    const Pose<D> p = m.pose(t0 + (t1 - t0) * s / (kSamples - 1));
+  double speed = 0;
+  for (long s = 0; s < samples; ++s) {
+    const Pose<D> p = m.pose(t0 + gap * double(s));
     for (int c = 0; c < (1 << D); ++c) {
       Vec<D> corner;
       for (int k = 0; k < D; ++k) corner[k] = (c >> k) & 1 ? outerMax[k] : outerMin[k];
       const Vec<D> x = p.position(corner);
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
+      speed = std::max(speed, p.velocity(corner).norm());
     }
   }
+  lo.array() -= 0.5 * gap * speed;
+  hi.array() += 0.5 * gap * speed;
 }
 
 template class MovingWalls<2>;

@@ -10,9 +10,12 @@
 //                           drives the fluid's normal velocity to the wall's at t^{n+1}, and the
 //                           no-slip mirror velocity is the wall's at the step's end.
 //   - the time-step limits: dt <= maxCo h / max|U_w| (the wall's Courant number, as the
-//                           fluid's) and dt <= 0.25 sqrt(h / max|a_w|) (as a body force).
-//   - sweptBox:             the box a wall's outer box sweeps over a time interval, sampled at
-//                           2001 instants, for the domain's default bounds.
+//                           fluid's) and dt <= 0.25 sqrt(h / max|a_w|) (as a body force),
+//                           evaluated by TimeLoop at the step's start and one previous step later.
+//   - sweptBox:             the box a wall's outer box sweeps over a time interval, for the
+//                           domain's default bounds: sampled at most 1 ms apart (2001 to 2e6
+//                           instants) and padded by half a sample gap times the largest
+//                           corner speed, so a fast oscillation is not missed between samples.
 // Particles carry the index of their motion + 1 in the field `motion` (0: fixed).
 // Reads no dictionary keys (WallMotion reads the `motion` sub-dictionaries).
 #pragma once

@@ -47,17 +47,18 @@ void checkMotionFields(const CaseFiles& files, const std::string& startName, Par
     P.motion.clear();
     return;
   }
+  // Each rank checks its share; the first rank's message stops every rank.
   const std::string where = "time directory '" + files.dir + "/" + startName + "'";
-  if (P.motion.empty() || P.restPosition.empty())
-    files.particlesDict.error("regions", "a wall region has a motion, but " + where +
-                                             " holds no moving-wall fields (restPosition, motion): it was written by "
-                                             "the case without motions; start from particlesDict (startFrom startTime "
-                                             "with no time directory) to build the moving walls");
-  for (std::size_t i = 0; i < P.size(); ++i)
+  std::string why;
+  if (P.size() > 0 && (P.motion.empty() || P.restPosition.empty()))
+    why = where + " holds no moving-wall fields (restPosition, motion): it was written by the case without "
+                  "motions; start from particlesDict (startFrom startTime with no time directory) to build the moving walls";
+  for (std::size_t i = 0; i < P.size() && why.empty(); ++i)
     if (P.motion[i] > motions || (P.motion[i] > 0 && !P.isWall(i)))
-      files.particlesDict.error("regions", cat(where, ": particle id ", P.id[i], " has motion ", int(P.motion[i]),
-                                               ", but the case has ", motions, " moving wall region(s) and only "
-                                               "wall particles move: the saved time belongs to another case"));
+      why = cat(where, ": particle id ", P.id[i], " has motion ", int(P.motion[i]), ", but the case has ", motions,
+                " moving wall region(s) and only wall particles move: the saved time belongs to another case");
+  why = Communicator::world().firstMessage(why);
+  if (!why.empty()) files.particlesDict.error("regions", "a wall region has a motion, but " + why);
 }
 
 }  // namespace

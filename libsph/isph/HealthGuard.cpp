@@ -189,6 +189,10 @@ void HealthGuard<D>::saveGoodState(const FlowState<D>& s) {
   goodP_.assign(P.pressure.begin(), P.pressure.begin() + n);
   goodId_.assign(P.id.begin(), P.id.begin() + n);
   goodType_.assign(P.type.begin(), P.type.begin() + n);
+  if (!P.restPosition.empty()) {  // a case with moving walls: their rest positions travel with them
+    goodRest_.assign(P.restPosition.begin(), P.restPosition.begin() + n);
+    goodMotion_.assign(P.motion.begin(), P.motion.begin() + n);
+  }
   goodBalance_ = s.balance;
   goodTime_ = s.time;
   goodStep_ = s.step;
@@ -204,6 +208,10 @@ void HealthGuard<D>::restoreGoodState(FlowState<D>& s) const {
   P.pressure = goodP_;
   P.id = goodId_;
   P.type = goodType_;
+  if (!P.restPosition.empty()) {
+    P.restPosition = goodRest_;
+    P.motion = goodMotion_;
+  }
   s.refreshTypeMasks();
   s.balance = goodBalance_;
   s.time = goodTime_;

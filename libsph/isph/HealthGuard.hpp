@@ -61,6 +61,8 @@ class HealthGuard {
   std::vector<double> goodP_;
   std::vector<std::int64_t> goodId_;
   std::vector<std::uint8_t> goodType_;
+  std::vector<Vec<D>> goodRest_;          // moving walls: rest positions (empty without)
+  std::vector<std::uint8_t> goodMotion_;
   double goodTime_ = 0, goodDt_ = 0;
   FluidBalance goodBalance_;
   long goodStep_ = 0;

@@ -52,7 +52,8 @@ template <int D>
 Simulation<D>::~Simulation() = default;
 
 // The moving walls, placed at the start time (a restart recomputes the positions it read,
-// to the same values); the domain's default bounds take the boxes they sweep to endTime.
+// to the same values); the domain's default bounds take the boxes they sweep from the
+// controlDict's startTime to endTime (the same interval for a run and its restart).
 template <int D>
 void Simulation<D>::buildMovingWalls(std::vector<std::shared_ptr<WallMotion<D>>> motions,
                                      std::vector<WallBox<D>>& domainWalls) {
@@ -60,8 +61,8 @@ void Simulation<D>::buildMovingWalls(std::vector<std::shared_ptr<WallMotion<D>>>
   for (auto& w : domainWalls) {
     if (w.motion < 0) continue;
     names[std::size_t(w.motion)] = w.name;
-    MovingWalls<D>::sweptBox(w, *motions[std::size_t(w.motion)], s_.time, std::max(s_.time, rc_.endTime), w.outerMin,
-                             w.outerMax);
+    const double from = std::min(rc_.startTime, s_.time), to = std::max(s_.time, rc_.endTime);
+    MovingWalls<D>::sweptBox(w, *motions[std::size_t(w.motion)], from, to, w.outerMin, w.outerMax);
   }
   movingWalls_ = std::make_unique<MovingWalls<D>>(std::move(motions), std::move(names));
   movingWalls_->place(s_.particles, s_.time);

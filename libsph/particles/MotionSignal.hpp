@@ -5,8 +5,11 @@
 //               Derivatives by fourth-order central differences with step 1e-4 s,
 //                 f'  = (-f(t+2e) + 8 f(t+e) - 8 f(t-e) + f(t-2e)) / (12 e),
 //                 f'' = (-f(t+2e) + 16 f(t+e) - 30 f(t) + 16 f(t-e) - f(t-2e)) / (12 e^2),
-//               truncation error e^4 f^(5)/30 and e^4 f^(6)/90: below 1e-9 of the value
-//               for any period above 0.01 s (measured in test_particles_motion).
+//               truncation error e^4 f^(5)/30 and e^4 f^(6)/90 (about 5e-7 of omega A and
+//               2e-7 of omega^2 A for a period of 0.01 s, falling as the period^-4), and
+//               rounding of about 1e-7 A in f'' (A the signal's size): test_particles_motion
+//               holds f' to 1e-9 of omega A and f'' to 1e-7 of omega^2 A for periods of
+//               0.8 and 0.05 s.
 //   table:      rows "t f1 [f2 f3]" read from a file (blank lines and lines starting with
 //               '#' skipped), times strictly increasing; linear interpolation (f' piecewise
 //               constant, f'' zero) or a natural cubic spline (f, f', f'' continuous);
