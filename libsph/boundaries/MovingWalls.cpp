@@ -7,8 +7,9 @@
 namespace shizuku {
 
 template <int D>
-MovingWalls<D>::MovingWalls(std::vector<std::shared_ptr<WallMotion<D>>> motions, std::vector<std::string> names)
-    : motions_(std::move(motions)), names_(std::move(names)) {
+MovingWalls<D>::MovingWalls(std::vector<std::shared_ptr<WallMotion<D>>> motions, std::vector<std::string> names,
+                            std::vector<std::pair<Vec<D>, Vec<D>>> boxes)
+    : motions_(std::move(motions)), names_(std::move(names)), boxes_(std::move(boxes)) {
   now_.resize(motions_.size());
   before_.resize(motions_.size());
   scratch_.resize(motions_.size());
@@ -29,10 +30,7 @@ void MovingWalls<D>::place(ParticleSet<D>& P, double t) {
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     const int m = P.motion[std::size_t(i)];
-    if (m == 0) continue;
-    const Pose<D>& p = now_[std::size_t(m - 1)];
-    P.position[i] = p.position(P.restPosition[i]);
-    P.velocity[i] = p.velocity(P.restPosition[i]);
+    if (m != 0) P.position[i] = now_[std::size_t(m - 1)].position(P.restPosition[i]);
   }
 }
 
@@ -48,19 +46,16 @@ void MovingWalls<D>::prescribeVelocity(ParticleSet<D>& P, double t) {
 }
 
 template <int D>
-void MovingWalls<D>::extremes(const ParticleSet<D>& P, std::size_t n, double t, double& speed, double& acceleration) {
+void MovingWalls<D>::extremes(double t, double& speed, double& acceleration) {
   evaluate(t);
-  double u2 = 0, a2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : u2, a2)
-  for (long i = 0; i < long(n); ++i) {
-    const int m = P.motion[std::size_t(i)];
-    if (m == 0) continue;
-    const Pose<D>& p = scratch_[std::size_t(m - 1)];
-    u2 = std::max(u2, p.velocity(P.restPosition[i]).squaredNorm());
-    a2 = std::max(a2, p.acceleration(P.restPosition[i]).squaredNorm());
-  }
-  speed = std::sqrt(u2);
-  acceleration = std::sqrt(a2);
+  speed = acceleration = 0;
+  for (std::size_t k = 0; k < motions_.size(); ++k)
+    for (int c = 0; c < (1 << D); ++c) {
+      Vec<D> corner;
+      for (int a = 0; a < D; ++a) corner[a] = (c >> a) & 1 ? boxes_[k].second[a] : boxes_[k].first[a];
+      speed = std::max(speed, scratch_[k].velocity(corner).norm());
+      acceleration = std::max(acceleration, scratch_[k].acceleration(corner).norm());
+    }
 }
 
 template <int D>

@@ -2,8 +2,8 @@
 // 4.5, docs/boundaries.md "Damping zone"): inside the box [min, max] the fluid feels
 //   a_i = -sigma(xi_i) u_i,   sigma(xi) = rate xi^2,   xi = (x_i . e - min . e) / (max - min) . e,
 // e the unit vector of `axis`, so the damping rises smoothly from zero where the waves enter
-// the zone to `rate` at its far end (a quadratic ramp reflects less than a step; measured in
-// tutorials/waveFlume). Outside the box nothing. Time-step limit dt <= 1 / rate (the explicit
+// the zone to `rate` at its far end (its reflection is measured in tutorials/waveFlume:
+// 0.7-0.9 % of the amplitude). Outside the box nothing. Time-step limit dt <= 1 / rate (the explicit
 // decay u (1 - sigma dt) stays monotone).
 // Reads (system/sphSchemes): dampingZone { min (..); max (..); axis x|y|z; rate [1/s]; }.
 #include "core/Parameter.hpp"

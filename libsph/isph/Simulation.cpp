@@ -58,14 +58,17 @@ template <int D>
 void Simulation<D>::buildMovingWalls(std::vector<std::shared_ptr<WallMotion<D>>> motions,
                                      std::vector<WallBox<D>>& domainWalls) {
   std::vector<std::string> names(motions.size());
+  std::vector<std::pair<Vec<D>, Vec<D>>> boxes(motions.size());
   for (auto& w : domainWalls) {
     if (w.motion < 0) continue;
     names[std::size_t(w.motion)] = w.name;
+    boxes[std::size_t(w.motion)] = {w.outerMin, w.outerMax};
     const double from = std::min(rc_.startTime, s_.time), to = std::max(s_.time, rc_.endTime);
     MovingWalls<D>::sweptBox(w, *motions[std::size_t(w.motion)], from, to, w.outerMin, w.outerMax);
   }
-  movingWalls_ = std::make_unique<MovingWalls<D>>(std::move(motions), std::move(names));
+  movingWalls_ = std::make_unique<MovingWalls<D>>(std::move(motions), std::move(names), std::move(boxes));
   movingWalls_->place(s_.particles, s_.time);
+  movingWalls_->prescribeVelocity(s_.particles, s_.time);
 }
 
 // Every rank has read or generated the whole set: each keeps its own particles and the

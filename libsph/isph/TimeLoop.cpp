@@ -51,14 +51,14 @@ double TimeLoop<D>::chooseDeltaT(double previous, double nextWrite) {
     TimeStepLimit effects = step_.effects().timeStepLimit(s_);
     effects.dt = world.min(effects.dt);
     // Moving walls: their Courant number as the fluid's, their acceleration as a force's
-    // (at the step's start and at its end with the previous step).
+    // (at the step's start and one previous step later; the same on every rank).
     double wallSpeed = 0, wallAcceleration = 0;
     if (auto* walls = step_.movingWalls())
       for (double t : {s_.time, s_.time + previous}) {
         double u = 0, a = 0;
-        walls->extremes(s_.particles, s_.numOwned(), t, u, a);
-        wallSpeed = std::max(wallSpeed, world.max(u));
-        wallAcceleration = std::max(wallAcceleration, world.max(a));
+        walls->extremes(t, u, a);
+        wallSpeed = std::max(wallSpeed, u);
+        wallAcceleration = std::max(wallAcceleration, a);
       }
     const TimeStepLimit lim[] = {
         {umax > 0 ? rc_.maxCo * s_.h / umax : INFINITY, "CFL"},

@@ -351,7 +351,7 @@ void checkWaterLevel() {
 // y = bottom, three and more spacings from the block's corners) must read
 // eta = y_s - stillWaterLevel. Measured: flat within 0.0036 d0 (as waterLevel), tilted by
 // 1:10 within 0.0019 d0 (2D and 3D). Bound 0.01 d0; without the interpolation between the
-// samples d0/4 apart the error reaches 0.25 d0.
+// samples d0/4 apart the error can reach 0.25 d0.
 template <int D>
 void checkWaveGauge(double slope) {
   const double d0 = 0.05, still = 0.9, th = std::atan(slope);
