@@ -27,13 +27,12 @@ namespace weights {
 // Fallback thresholds of docs/method.md 3.4 with the dimension defaults filled in.
 template <int D> struct Limits {
   int minNeighboursFI, minNeighboursFirstOrder;
-  double minRcondFI, minRcondFirstOrder, minLaplacianRenormalisation;
+  double minRcondFI, minRcondFirstOrder;
   explicit Limits(const FallbackThresholds& t)
       : minNeighboursFI(t.minNeighboursFI > 0 ? t.minNeighboursFI : (D == 2 ? 6 : 12)),
         minNeighboursFirstOrder(t.minNeighboursFirstOrder > 0 ? t.minNeighboursFirstOrder : (D == 2 ? 3 : 4)),
         minRcondFI(t.minRcondFI),
-        minRcondFirstOrder(t.minRcondFirstOrder),
-        minLaplacianRenormalisation(t.minLaplacianRenormalisation) {}
+        minRcondFirstOrder(t.minRcondFirstOrder) {}
 };
 
 enum Order : std::uint8_t { orderStandard = 0, orderFirst = 1, orderFI = 2, orderNone = 255 };
@@ -332,18 +331,14 @@ inline bool firstOrderRow(const Limits<D>& lim, double h, double V, const Neighb
   Mat<D> Binv;
   bool ok = invertWithRcond<D>(B, Binv) > 0;
   const Vec<D> Bo = ok ? Vec<D>(Binv * o) : Vec<D>::Zero();
-  // den -> 0 on one-sided stencils (a convex corner with a far neighbour beyond it):
-  // the weights grow as 1/den, so the row takes Morris's Laplacian below a tenth of
-  // the unrenormalised sum (FallbackThresholds::minLaplacianRenormalisation).
-  double den = 0, plain = 0;
+  double den = 0;
   ok = ok && Bo.allFinite();
   if (ok) {
     for (Index p = b; p < e; ++p) {
       const Vec<D> s = -invH * nl.rij[p];
       den += out.w[p] * s.squaredNorm() * (1.0 - s.dot(Bo));
-      plain += out.w[p] * s.squaredNorm();
     }
-    ok = den > lim.minLaplacianRenormalisation * plain && std::isfinite(den);
+    ok = den > 0 && std::isfinite(den);
   }
   const double lScale = ok ? 2.0 * D / (V * den * h * h) : 0.0;
   const double invH2 = invH * invH;

@@ -85,12 +85,6 @@ MUTATIONS = [
              '        {INFINITY, "wallSpeed"},\n',
              [r"^unit\.test_isph_movingWalls$"],
              "the time step ignores a moving wall's speed: a fast wall crosses its support in one step"),
-    Mutation("renormalisedLaplacianUnguarded", "libsph/operators/WeightRows.hpp",
-             "    ok = den > lim.minLaplacianRenormalisation * plain && std::isfinite(den);\n",
-             "    ok = den > 0 && std::isfinite(den);\n",
-             [r"^unit\.test_operators_fallback$"],
-             "a one-sided first-order row keeps the renormalised Laplacian as its denominator nears zero: "
-             "weights a thousand times Morris's, a viscous kick of 1e5 m/s^2 on a surface particle"),
     Mutation("amgWideStencilUntruncated", "libsph/linearSolvers/AggregationAMG.cpp",
              "    if (wide_) truncate(P);\n",
              "",
