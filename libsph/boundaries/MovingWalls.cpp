@@ -6,6 +6,16 @@
 
 namespace shizuku {
 
+namespace {
+// Corner c (0 <= c < 2^D; bit a picks hi along axis a) of the box [lo, hi].
+template <int D>
+Vec<D> boxCorner(const Vec<D>& lo, const Vec<D>& hi, int c) {
+  Vec<D> corner;
+  for (int a = 0; a < D; ++a) corner[a] = (c >> a) & 1 ? hi[a] : lo[a];
+  return corner;
+}
+}  // namespace
+
 template <int D>
 MovingWalls<D>::MovingWalls(std::vector<std::shared_ptr<WallMotion<D>>> motions, std::vector<std::string> names,
                             std::vector<std::pair<Vec<D>, Vec<D>>> boxes)
@@ -51,8 +61,7 @@ void MovingWalls<D>::extremes(double t, double& speed, double& acceleration) {
   speed = acceleration = 0;
   for (std::size_t k = 0; k < motions_.size(); ++k)
     for (int c = 0; c < (1 << D); ++c) {
-      Vec<D> corner;
-      for (int a = 0; a < D; ++a) corner[a] = (c >> a) & 1 ? boxes_[k].second[a] : boxes_[k].first[a];
+      const Vec<D> corner = boxCorner<D>(boxes_[k].first, boxes_[k].second, c);
       speed = std::max(speed, scratch_[k].velocity(corner).norm());
       acceleration = std::max(acceleration, scratch_[k].acceleration(corner).norm());
     }
@@ -80,8 +89,7 @@ void MovingWalls<D>::sweptBox(const WallBox<D>& w, WallMotion<D>& m, double t0, 
   for (long s = 0; s < samples; ++s) {
     const Pose<D> p = m.pose(t0 + gap * double(s));
     for (int c = 0; c < (1 << D); ++c) {
-      Vec<D> corner;
-      for (int k = 0; k < D; ++k) corner[k] = (c >> k) & 1 ? outerMax[k] : outerMin[k];
+      const Vec<D> corner = boxCorner<D>(outerMin, outerMax, c);
       const Vec<D> x = p.position(corner);
       lo = lo.cwiseMin(x);
       hi = hi.cwiseMax(x);
