@@ -11,6 +11,8 @@
 //       L_i gradW, L_i = (V sum_j gradW (x) r_ji)^-1, and the renormalised
 //       Laplacian of Basic et al. (2018), exact for linear fields (3.5), if
 //       n >= 3 / 4 and rcond(A) > 1e-3;
+//   (FI and first order only where no corrected gradient weight exceeds ten times the
+//   row's largest kernel gradient);
 //   standard (all): tilde gradW = grad_i W_ij, Laplacian weight
 //       2 (r_ji . grad_i W_ij) / r^2 (Morris/Brookshaw; positive, so
 //       <lap (x^2+y^2)> ~ 2D on a lattice).
@@ -43,11 +45,18 @@ class FallbackOperator final : public DerivativeOperator<D> {
     const weights::Limits<D> lim(this->thresholds_);
     weights::computeRows<D>(nl, computeFor, out, [&](std::size_t i, Index b, Index e) -> std::uint8_t {
       weights::kernelRow(kernel, nl, b, e, out);
+      const double kernelGradient = weights::largestKernelGradient(h, nl, b, e, out);
       const std::uint8_t row = computeFor.empty() ? 1 : computeFor[i];
       if constexpr (Top == weights::orderFI)
-        if (row == 1 && weights::fiRow(lim, h, V, nl, b, e, out)) return weights::orderFI;
+        if (row == 1 && weights::fiRow(lim, h, V, nl, b, e, out)) {
+          if (weights::gradientBounded(lim, kernelGradient, b, e, out)) return weights::orderFI;
+          weights::kernelRow(kernel, nl, b, e, out);  // fiRow wrote over the kernel values
+        }
       if constexpr (Top != weights::orderStandard)
-        if (row <= 2 && weights::firstOrderRow(lim, h, V, nl, b, e, out)) return weights::orderFirst;
+        if (row <= 2 && weights::firstOrderRow(lim, h, V, nl, b, e, out)) {
+          if (weights::gradientBounded(lim, kernelGradient, b, e, out)) return weights::orderFirst;
+          weights::kernelRow(kernel, nl, b, e, out);
+        }
       weights::standardRow(h, nl, b, e, out);
       return weights::orderStandard;
     });

@@ -38,11 +38,22 @@ struct PairWeights {
 // minRcondFirstOrder, else standard. `corrected` uses the first-order test.
 // A neighbour minimum of 0 means the default of the dimension (FI: 6 in 2D,
 // 12 in 3D; first order: 3 / 4). rcond is the exact 1-norm value.
+// A row keeps FI or first-order weights only where its largest corrected gradient weight
+// is at most maxGradientAmplification times its largest kernel gradient |dW/dr|.
+// A first-order row keeps the renormalised Laplacian only where its denominator
+// sum_j w_ij s_ij^2 chi_ij is at least minLaplacianRenormalisation times the
+// unrenormalised sum_j w_ij s_ij^2, i.e. where renormalising amplifies the kernel's
+// Laplacian weights at most tenfold; else the row's Laplacian is Morris's
+// (docs/method.md 3.5).
 struct FallbackThresholds {
   double minRcondFI = 1e-4;
   double minRcondFirstOrder = 1e-3;
   int minNeighboursFI = 0;
   int minNeighboursFirstOrder = 0;
+  double minLaplacianRenormalisation = 0.1;
+  // A row's corrected gradient weights may be at most this many times the largest kernel
+  // gradient of the row; a row beyond takes the next link of the chain (docs/method.md 3.4).
+  double maxGradientAmplification = 10;
 };
 
 template <int D>

@@ -19,6 +19,7 @@
 // Reads no dictionary keys.
 #pragma once
 #include "operators/DerivativeOperator.hpp"
+#include <algorithm>
 #include <cmath>
 
 namespace shizuku {
@@ -27,12 +28,14 @@ namespace weights {
 // Fallback thresholds of docs/method.md 3.4 with the dimension defaults filled in.
 template <int D> struct Limits {
   int minNeighboursFI, minNeighboursFirstOrder;
-  double minRcondFI, minRcondFirstOrder;
+  double minRcondFI, minRcondFirstOrder, minLaplacianRenormalisation, maxGradientAmplification;
   explicit Limits(const FallbackThresholds& t)
       : minNeighboursFI(t.minNeighboursFI > 0 ? t.minNeighboursFI : (D == 2 ? 6 : 12)),
         minNeighboursFirstOrder(t.minNeighboursFirstOrder > 0 ? t.minNeighboursFirstOrder : (D == 2 ? 3 : 4)),
         minRcondFI(t.minRcondFI),
-        minRcondFirstOrder(t.minRcondFirstOrder) {}
+        minRcondFirstOrder(t.minRcondFirstOrder),
+        minLaplacianRenormalisation(t.minLaplacianRenormalisation),
+        maxGradientAmplification(t.maxGradientAmplification) {}
 };
 
 enum Order : std::uint8_t { orderStandard = 0, orderFirst = 1, orderFI = 2, orderNone = 255 };
@@ -309,6 +312,26 @@ inline void standardRow(double h, const NeighbourList<D>& nl, Index b, Index e, 
   }
 }
 
+// Largest kernel gradient |dW/dr| of a row, from the kappa kernelRow stores
+// (gradW_ij = kappa s / h with |s| = r / h).
+template <int D>
+inline double largestKernelGradient(double h, const NeighbourList<D>& nl, Index b, Index e, const PairWeights<D>& out) {
+  double g = 0;
+  for (Index p = b; p < e; ++p) g = std::max(g, std::abs(out.lapW[p]) * nl.r[p] / (h * h));
+  return g;
+}
+
+// Whether a row's corrected gradient weights stay within lim.maxGradientAmplification
+// times `kernelGradient` (docs/method.md 3.4): on one-sided stencils the correction
+// matrices can pass their rcond test and still multiply the kernel gradient a hundredfold.
+template <int D>
+inline bool gradientBounded(const Limits<D>& lim, double kernelGradient, Index b, Index e, const PairWeights<D>& out) {
+  const double bound = lim.maxGradientAmplification * kernelGradient;
+  for (Index p = b; p < e; ++p)
+    if (!(out.gradW[p].squaredNorm() <= bound * bound)) return false;
+  return true;
+}
+
 // First-order row (after kernelRow): KGC gradient and renormalised Laplacian.
 // Returns false (weights untouched) if the 2x2/3x3 correction is singular.
 template <int D>
@@ -331,14 +354,18 @@ inline bool firstOrderRow(const Limits<D>& lim, double h, double V, const Neighb
   Mat<D> Binv;
   bool ok = invertWithRcond<D>(B, Binv) > 0;
   const Vec<D> Bo = ok ? Vec<D>(Binv * o) : Vec<D>::Zero();
-  double den = 0;
+  // den -> 0 on one-sided stencils (a convex corner with a far neighbour beyond it):
+  // the weights grow as 1/den, so the row takes Morris's Laplacian below a tenth of
+  // the unrenormalised sum (FallbackThresholds::minLaplacianRenormalisation).
+  double den = 0, plain = 0;
   ok = ok && Bo.allFinite();
   if (ok) {
     for (Index p = b; p < e; ++p) {
       const Vec<D> s = -invH * nl.rij[p];
       den += out.w[p] * s.squaredNorm() * (1.0 - s.dot(Bo));
+      plain += out.w[p] * s.squaredNorm();
     }
-    ok = den > 0 && std::isfinite(den);
+    ok = den > lim.minLaplacianRenormalisation * plain && std::isfinite(den);
   }
   const double lScale = ok ? 2.0 * D / (V * den * h * h) : 0.0;
   const double invH2 = invH * invH;

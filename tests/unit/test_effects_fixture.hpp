@@ -18,6 +18,7 @@ template <int D>
 struct Fixture {
   FlowState<D> s;
   double d0 = 1.0;
+  FallbackThresholds thresholds;  // of the SPH(2) weights update() computes
 
   explicit Fixture(double spacing = 1.0, double hRatio = 1.2) : d0(spacing) {
     s.d0 = d0;
@@ -51,7 +52,7 @@ struct Fixture {
     for (std::size_t i = 0; i < n; ++i) s.isFluidMask[i] = s.particles.isFluid(i) ? 1 : 0;
     NeighbourSearch<D> search(s.kernel.support(), s.periodic);
     search.build(s.particles.position, s.neighbours);
-    auto op = DerivativeOperator<D>::create(DerivativeScheme::SPH2);
+    auto op = DerivativeOperator<D>::create(DerivativeScheme::SPH2, thresholds);
     op->computeWeights(s.kernel, s.V(), s.neighbours, s.isFluidMask, s.weights);
     s.refreshPairGeometry();
     s.computeDensity();
