@@ -44,8 +44,7 @@ class FallbackOperator final : public DerivativeOperator<D> {
     const double h = kernel.h();
     const weights::Limits<D> lim(this->thresholds_);
     weights::computeRows<D>(nl, computeFor, out, [&](std::size_t i, Index b, Index e) -> std::uint8_t {
-      weights::kernelRow(kernel, nl, b, e, out);
-      const double kernelGradient = weights::largestKernelGradient(h, nl, b, e, out);
+      const double kernelGradient = weights::kernelRow(kernel, nl, b, e, out);
       const std::uint8_t row = computeFor.empty() ? 1 : computeFor[i];
       if constexpr (Top == weights::orderFI)
         if (row == 1 && weights::fiRow(lim, h, V, nl, b, e, out)) {

@@ -212,10 +212,12 @@ inline double invertWithRcond(const Mat<D>& m, Mat<D>& inv) {
 
 // Kernel pass of row [b, e): w into out.w, kappa = c h^2 into out.lapW and
 // beta = kappa h^2 / r^2 into out.gradW[p][0] (scratch, overwritten by the row
-// functions below, one of which must follow).
+// functions below, one of which must follow). Returns the row's largest kernel
+// gradient |dW/dr| (the reference of gradientBounded).
 template <int D>
-inline void kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, Index b, Index e, PairWeights<D>& out) {
+inline double kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, Index b, Index e, PairWeights<D>& out) {
   const double h2 = k.h() * k.h();
+  double largest = 0;
   for (Index p = b; p < e; ++p) {
     const double r = nl.r[p], invR = r > 0 ? 1.0 / r : 0.0;  // coincident particles: no weight
     double w, dw;
@@ -224,7 +226,9 @@ inline void kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, Index b, I
     out.w[p] = w;
     out.lapW[p] = kappa;
     out.gradW[p][0] = kappa * h2 * invR * invR;
+    if (r > 0) largest = std::max(largest, std::abs(dw));
   }
+  return largest;
 }
 
 // FI row (after kernelRow). Returns false (kernelRow scratch untouched) if the
@@ -310,15 +314,6 @@ inline void standardRow(double h, const NeighbourList<D>& nl, Index b, Index e, 
     out.gradW[p] = -c * nl.rij[p];         // c r_ji
     out.lapW[p] = 2.0 * c;
   }
-}
-
-// Largest kernel gradient |dW/dr| of a row, from the kappa kernelRow stores
-// (gradW_ij = kappa s / h with |s| = r / h).
-template <int D>
-inline double largestKernelGradient(double h, const NeighbourList<D>& nl, Index b, Index e, const PairWeights<D>& out) {
-  double g = 0;
-  for (Index p = b; p < e; ++p) g = std::max(g, std::abs(out.lapW[p]) * nl.r[p] / (h * h));
-  return g;
 }
 
 // Whether a row's corrected gradient weights stay within lim.maxGradientAmplification
