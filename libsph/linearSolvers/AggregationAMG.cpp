@@ -1,5 +1,6 @@
 // Smoothed-aggregation AMG preconditioner (see AggregationAMG.hpp for the method).
 #include "linearSolvers/AggregationAMG.hpp"
+#include "linearSolvers/SparseProducts.hpp"
 #include "core/Log.hpp"
 #include "core/types.hpp"
 #include <string>
@@ -227,26 +228,15 @@ void AggregationAMG::build(const SparseMatrixR& A) {
       }
       return;
     }
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(n);
-    for (int i = 0; i < n; ++i)
-      if (agg[i] >= 0) t.emplace_back(i, agg[i], 1.0);
-    SparseMatrixR P0(n, nc);
-    P0.setFromTriplets(t.begin(), t.end());
-    // P = P0 - omega D^-1 A P0: scale the rows of A P0, then subtract.
-    SparseMatrixR AP0 = (*cur) * P0;
-    for (int i = 0; i < n; ++i)
-      for (SparseMatrixR::InnerIterator it(AP0, i); it; ++it) it.valueRef() *= -kOmega * L.invDiag[i];
-    SparseMatrixR P = P0 + AP0;
+    SparseMatrixR P, R, AP, Ac;
+    smoothedProlongator(*cur, L.invDiag, agg, nc, kOmega, P);
     if (wide_) truncate(P);
     P.prune(0.0);
-    P.makeCompressed();
-    SparseMatrixR R = P.transpose();
-    R.makeCompressed();
-    SparseMatrixR AP = (*cur) * P;
-    SparseMatrixR Ac = R * AP;
+    transposeSparse(P, R);
+    multiplySparse(*cur, P, AP);
+    multiplySparse(R, AP, Ac);
+    AP = SparseMatrixR();  // freed before the next level's setup
     Ac.prune(0.0);
-    Ac.makeCompressed();
     L.P = std::move(P);
     L.R = std::move(R);
     levels_.emplace_back();

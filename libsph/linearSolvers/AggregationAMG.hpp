@@ -21,8 +21,10 @@
 //     after the coarse correction. The finest level always uses the current
 //     matrix; the coarse levels are kept from the last setup (the matrix changes
 //     little from one step to the next).
-// Levels below 8192 rows run on one thread. Setup uses Eigen's sparse products
-// (one thread, allocates); a cycle allocates nothing. Keys: preconditioner AMG; amgReuse 10.
+// Levels below 8192 rows run on one thread. The setup's products (P, R = P^T, A P and
+// R (A P)) are SparseProducts' row-parallel ones, equal to Eigen's bit for bit and built
+// in place (the setup allocates its levels); a cycle allocates nothing.
+// Keys: preconditioner AMG; amgReuse 10.
 #pragma once
 #include "linearSolvers/Preconditioner.hpp"
 #include <Eigen/Dense>
