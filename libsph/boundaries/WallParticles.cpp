@@ -40,7 +40,7 @@ void WallContacts<D>::update(const FlowState<D>& s) {
     bool alone = true;
     for (Index k = nl.begin(f); k < nl.end(f); ++k) {
       const Index j = nl.j[k];
-      if (s.particles.isWall(std::size_t(j))) sum += s.weights.w[k] * nl.rij[k];
+      if (s.particles.isWall(std::size_t(j))) sum += s.weights.w[k] * nl.rij(std::size_t(f), k);
       else if (s.isFluid(std::size_t(j)) && j != f) alone = false;
     }
     const double len = sum.norm();
@@ -69,8 +69,9 @@ AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, const WallContacts<D>& c
     const Vec<D> a = inlet ? Vec<D>((s.uStar[f] - Uw) * invDt)
                            : Vec<D>(contacts.lone[f] ? Vec<D>(n * n.dot(forces)) : forces);
     row.weightSum += s.weights.w[k];
-    sum += s.weights.w[k] * a.dot(nl.rij[k]);
-    if (!inlet) velocitySum += s.weights.w[k] * n.dot(s.particles.velocity[f] - Uw) * n.dot(nl.rij[k]);
+    const Vec<D> rwf = nl.rij(w, k);
+    sum += s.weights.w[k] * a.dot(rwf);
+    if (!inlet) velocitySum += s.weights.w[k] * n.dot(s.particles.velocity[f] - Uw) * n.dot(rwf);
     previousPressure += s.weights.w[k] * s.particles.pressure[f];
   }
   if (row.weightSum > 0) {

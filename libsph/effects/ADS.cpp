@@ -60,16 +60,17 @@ void ADS<D>::correctPositions(FlowState<D>& s) {
     if (mi || (o_.pairwise && s.isFluid(Index(i)))) {
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const Index j = nl.j[k];
-        const double r = nl.r[k], dAds = s.isFluid(j) ? dFluid : dWall;
+        const Vec<D> rij = nl.rij(std::size_t(i), k);
+        const double r = std::sqrt(rij.squaredNorm()), dAds = s.isFluid(j) ? dFluid : dWall;
         if (!(r < dAds) || !(r > 0)) continue;
         const bool mj = moved(j);
         if (!mi && !mj) continue;
-        if (o_.approachingOnly && (u[i] - u[j]).dot(nl.rij[k]) >= 0) continue;
+        if (o_.approachingOnly && (u[i] - u[j]).dot(rij) >= 0) continue;
         double omega;
         if (!s.isFluid(j)) omega = 1.0;                  // a wall: the fluid particle takes it all
         else if (o_.pairwise || mj) omega = 0.5;         // both partners move
         else omega = 1.0;                                // partners surface: interior j stays
-        d += (omega * (dAds - r) / r) * nl.rij[k];
+        d += (omega * (dAds - r) / r) * rij;
       }
     }
     delta_[i] = C_ * d;

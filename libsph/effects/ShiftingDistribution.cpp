@@ -102,13 +102,14 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     const double Ci = rho[i] * invRho0;
     Vec<D> sum = Vec<D>::Zero();
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
-      const double r = nl.r[k];
+      const Vec<D> rij = nl.rij(std::size_t(i), k);
+      const double r = std::sqrt(rij.squaredNorm());
       if (!(r > 0)) continue;
       if (ops) {
         double wv, dw;
         s.kernel.eval(r, wv, dw);
         const double clump = this->par_.Rp * power(wv * invW0, this->par_.np, wholeNp);
-        const Vec<D> gradW = (dw / r) * nl.rij[k];
+        const Vec<D> gradW = (dw / r) * rij;
         switch (grad) {
           case G::kernel: sum += (1.0 + clump) * gradW; break;
           case G::corrected: sum += (1.0 + clump) * s.weights.gradW[k]; break;
@@ -117,7 +118,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
             break;
         }
       } else if (r < rStar) {
-        sum += (s.kernel.w(r) / r) * nl.rij[k];
+        sum += (s.kernel.w(r) / r) * rij;
       }
     }
     Vec<D> d = coeff * sum;

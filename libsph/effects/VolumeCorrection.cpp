@@ -36,7 +36,8 @@ void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& d
     const double ei = rho[i] * invRho0 - 1.0;
     Vec<D> sum = Vec<D>::Zero();
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
-      const double r = nl.r[k];
+      const Vec<D> rij = nl.rij(std::size_t(i), k);
+      const double r = std::sqrt(rij.squaredNorm());
       if (!(r < rStar) || !(r > 0)) continue;
       const Index j = nl.j[k];
       // A neighbour's own density counts only when its kernel sum is whole: a wall, or a
@@ -45,7 +46,7 @@ void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& d
       // the interior outward (docs/method.md 7, implementation notes).
       const bool whole = s.isFluid(j) && s.surfaceClass(j) == SurfaceClass::interior;
       const double ej = whole ? rho[j] * invRho0 - 1.0 : 0.0;
-      sum += ((ei + ej) / r) * nl.rij[k];
+      sum += ((ei + ej) / r) * rij;
     }
     dr[i] += coeff * sum;
     ++count;

@@ -90,7 +90,7 @@ void IsphStep<D>::analyse() {
     s_.weights.w.resize(nl.numPairs());
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i)
-      for (Index k = nl.begin(i); k < nl.end(i); ++k) s_.weights.w[k] = s_.kernel.w(nl.r[k]);
+      for (Index k = nl.begin(i); k < nl.end(i); ++k) s_.weights.w[k] = s_.kernel.w(nl.r(std::size_t(i), k));
     s_.computeDensity();
   }
   { StageTimers::Scope t(timers_, st_.freeSurface); scheme_.freeSurface->detect(s_); }

@@ -44,19 +44,19 @@ class FallbackOperator final : public DerivativeOperator<D> {
     const double h = kernel.h();
     const weights::Limits<D> lim(this->thresholds_);
     weights::computeRows<D>(nl, computeFor, out, [&](std::size_t i, Index b, Index e) -> std::uint8_t {
-      const double kernelGradient = weights::kernelRow(kernel, nl, b, e, out);
+      const double kernelGradient = weights::kernelRow(kernel, nl, i, b, e, out);
       const std::uint8_t row = computeFor.empty() ? 1 : computeFor[i];
       if constexpr (Top == weights::orderFI)
-        if (row == 1 && weights::fiRow(lim, h, V, nl, b, e, out)) {
+        if (row == 1 && weights::fiRow(lim, h, V, nl, i, b, e, out)) {
           if (weights::gradientBounded(lim, kernelGradient, b, e, out)) return weights::orderFI;
-          weights::kernelRow(kernel, nl, b, e, out);  // fiRow wrote over the kernel values
+          weights::kernelRow(kernel, nl, i, b, e, out);  // fiRow wrote over the kernel values
         }
       if constexpr (Top != weights::orderStandard)
-        if (row <= 2 && weights::firstOrderRow(lim, h, V, nl, b, e, out)) {
+        if (row <= 2 && weights::firstOrderRow(lim, h, V, nl, i, b, e, out)) {
           if (weights::gradientBounded(lim, kernelGradient, b, e, out)) return weights::orderFirst;
-          weights::kernelRow(kernel, nl, b, e, out);
+          weights::kernelRow(kernel, nl, i, b, e, out);
         }
-      weights::standardRow(h, nl, b, e, out);
+      weights::standardRow(h, nl, i, b, e, out);
       return weights::orderStandard;
     });
   }

@@ -1,4 +1,4 @@
-// FlowState helpers: pair-geometry refresh and the summation density (eq. 18).
+// FlowState helpers: the kernel values of the moved pairs and the summation density (eq. 18).
 #include "operators/FlowState.hpp"
 
 namespace shizuku {
@@ -6,16 +6,10 @@ namespace shizuku {
 template <int D>
 void FlowState<D>::refreshPairGeometry() {
   auto& nl = neighbours;
-  const auto& x = particles.position;
   const long n = long(nl.numParticles());
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i)
-    for (Index k = nl.begin(i); k < nl.end(i); ++k) {
-      const Vec<D> d = periodic.any() ? periodic.difference(x[i], x[nl.j[k]]) : Vec<D>(x[i] - x[nl.j[k]]);
-      nl.rij[k] = d;
-      nl.r[k] = d.norm();
-      weights.w[k] = kernel.w(nl.r[k]);
-    }
+    for (Index k = nl.begin(i); k < nl.end(i); ++k) weights.w[k] = kernel.w(nl.r(std::size_t(i), k));
 }
 
 template <int D>

@@ -64,7 +64,8 @@ struct FlowState {
   void refreshTypeMasks();
   SurfaceClass surfaceClass(std::size_t i) const { return particles.surfaceClass(i); }
 
-  // Recompute r_ij, |r_ij| and W_ij on the current pair list after positions moved.
+  // Recompute W_ij on the current pair list after positions moved (r_ij and |r_ij| are
+  // computed from the positions wherever they are used: NeighbourList::rij).
   void refreshPairGeometry();
   // Summation density <rho>_i = m sum_j W_ij incl. self and walls (eq. 18), for all particles.
   void computeDensity();

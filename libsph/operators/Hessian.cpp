@@ -18,12 +18,13 @@ Mat<D> Ops<D>::hessian(const Kernel<D>& kernel, double V, const NeighbourList<D>
   Eigen::Matrix<double, NB, NB> S = Eigen::Matrix<double, NB, NB>::Zero();
   Eigen::Matrix<double, NB, 1> rhs = Eigen::Matrix<double, NB, 1>::Zero(), P, phi;
   for (Index p = nl.offset[i]; p < nl.offset[i + 1]; ++p) {
-    const double r = nl.r[p];
+    const Vec<D> rij = nl.rij(i, p);
+    const double r = std::sqrt(rij.squaredNorm());
     if (!(r > 0)) continue;  // coincident particles carry no information
     double w, dw;
     kernel.eval(r, w, dw);
     const double kappa = -dw / r * h * h, beta = kappa * h * h / (r * r);
-    T::fill(Vec<D>(-invH * nl.rij[p]), kappa, beta, P.data(), phi.data());
+    T::fill(Vec<D>(-invH * rij), kappa, beta, P.data(), phi.data());
     S.noalias() += phi * P.transpose();
     rhs += (f[nl.j[p]] - f[i]) * phi;
   }

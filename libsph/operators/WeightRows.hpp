@@ -215,11 +215,11 @@ inline double invertWithRcond(const Mat<D>& m, Mat<D>& inv) {
 // functions below, one of which must follow). Returns the row's largest kernel
 // gradient |dW/dr| (the reference of gradientBounded).
 template <int D>
-inline double kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, Index b, Index e, PairWeights<D>& out) {
+inline double kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, std::size_t i, Index b, Index e, PairWeights<D>& out) {
   const double h2 = k.h() * k.h();
   double largest = 0;
   for (Index p = b; p < e; ++p) {
-    const double r = nl.r[p], invR = r > 0 ? 1.0 / r : 0.0;  // coincident particles: no weight
+    const double r = nl.r(i, p), invR = r > 0 ? 1.0 / r : 0.0;  // coincident particles: no weight
     double w, dw;
     k.eval(r, w, dw);
     const double kappa = -dw * invR * h2;
@@ -234,7 +234,7 @@ inline double kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, Index b,
 // FI row (after kernelRow). Returns false (kernelRow scratch untouched) if the
 // stencil fails the FI criteria.
 template <int D>
-inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<D>& nl, Index b, Index e,
+inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<D>& nl, std::size_t i, Index b, Index e,
                   PairWeights<D>& out) {
   using T = Taylor<D>;
   constexpr int NB = T::NB;
@@ -245,7 +245,7 @@ inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<
   constexpr int n2 = Mo::n2, n3 = Mo::n3, n4 = Mo::n4;
   double K2[n2] = {}, K3[n3] = {}, B3[n3] = {}, B4[n4] = {};
   for (Index p = b; p < e; ++p) {
-    const Vec<D> s = -invH * nl.rij[p];
+    const Vec<D> s = -invH * nl.rij(i, p);
     const double kappa = out.lapW[p], beta = out.gradW[p][0];
     double m2[n2], m3[n3], m4[n4];
     for (int a = 0; a < D; ++a) m2[a] = s[a] * s[a];
@@ -284,7 +284,7 @@ inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<
     ell[l] = lScale * sum;
   }
   for (Index p = b; p < e; ++p) {
-    const Vec<D> s = -invH * nl.rij[p];
+    const Vec<D> s = -invH * nl.rij(i, p);
     const double kappa = out.lapW[p], beta = out.gradW[p][0];
     double q[n2];
     for (int a = 0; a < D; ++a) q[a] = s[a] * s[a];
@@ -307,11 +307,11 @@ inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<
 
 // Standard row (after kernelRow): plain gradient, Morris/Brookshaw Laplacian 2c.
 template <int D>
-inline void standardRow(double h, const NeighbourList<D>& nl, Index b, Index e, PairWeights<D>& out) {
+inline void standardRow(double h, const NeighbourList<D>& nl, std::size_t i, Index b, Index e, PairWeights<D>& out) {
   const double invH2 = 1.0 / (h * h);
   for (Index p = b; p < e; ++p) {
     const double c = out.lapW[p] * invH2;  // kappa = c h^2
-    out.gradW[p] = -c * nl.rij[p];         // c r_ji
+    out.gradW[p] = -c * nl.rij(i, p);         // c r_ji
     out.lapW[p] = 2.0 * c;
   }
 }
@@ -330,14 +330,14 @@ inline bool gradientBounded(const Limits<D>& lim, double kernelGradient, Index b
 // First-order row (after kernelRow): KGC gradient and renormalised Laplacian.
 // Returns false (weights untouched) if the 2x2/3x3 correction is singular.
 template <int D>
-inline bool firstOrderRow(const Limits<D>& lim, double h, double V, const NeighbourList<D>& nl, Index b, Index e,
+inline bool firstOrderRow(const Limits<D>& lim, double h, double V, const NeighbourList<D>& nl, std::size_t i, Index b, Index e,
                           PairWeights<D>& out) {
   if (e - b < lim.minNeighboursFirstOrder) return false;
   const double invH = 1.0 / h;
   Mat<D> A = Mat<D>::Zero(), B = Mat<D>::Zero();
   Vec<D> o = Vec<D>::Zero();
   for (Index p = b; p < e; ++p) {
-    const Vec<D> s = -invH * nl.rij[p];  // r_ji / h
+    const Vec<D> s = -invH * nl.rij(i, p);  // r_ji / h
     A.noalias() += out.lapW[p] * s * s.transpose();  // kappa s s^T = h gradW (x) s
     B.noalias() += out.w[p] * s * s.transpose();
     o += out.w[p] * s;
@@ -356,7 +356,7 @@ inline bool firstOrderRow(const Limits<D>& lim, double h, double V, const Neighb
   ok = ok && Bo.allFinite();
   if (ok) {
     for (Index p = b; p < e; ++p) {
-      const Vec<D> s = -invH * nl.rij[p];
+      const Vec<D> s = -invH * nl.rij(i, p);
       den += out.w[p] * s.squaredNorm() * (1.0 - s.dot(Bo));
       plain += out.w[p] * s.squaredNorm();
     }
@@ -365,7 +365,7 @@ inline bool firstOrderRow(const Limits<D>& lim, double h, double V, const Neighb
   const double lScale = ok ? 2.0 * D / (V * den * h * h) : 0.0;
   const double invH2 = invH * invH;
   for (Index p = b; p < e; ++p) {
-    const Vec<D> s = -invH * nl.rij[p];
+    const Vec<D> s = -invH * nl.rij(i, p);
     const double kappa = out.lapW[p];
     out.gradW[p] = (kappa * invH) * (L * s);  // L gradW, gradW = c r_ji = kappa s / h
     out.lapW[p] = ok ? lScale * out.w[p] * (1.0 - s.dot(Bo)) : 2.0 * kappa * invH2;  // else Morris

@@ -89,8 +89,7 @@ struct NeighbourSearch<D>::Impl {
   void bulkBox(const std::vector<Vec<D>>& x, double radius, Vec<D>& mn, Vec<D>& mx);
   void sortByCell(const std::vector<Vec<D>>& x, const PeriodicBox<D>& box);
   // After the scan (row lengths summed into out.offset): the rows, sorted by j.
-  template <class MinImage>
-  void copyRows(NeighbourList<D>& out, bool periodic, const MinImage& minImage);
+  void copyRows(NeighbourList<D>& out);
   // The particles of the distinct neighbour cells of cell c (including c), as
   // ranges [b, e) of cell-order positions; consecutive cells are merged.
   int neighbourRanges(std::int64_t c, const PeriodicBox<D>& box, Index* ranges) const;
@@ -277,41 +276,29 @@ NeighbourSearch<D>::NeighbourSearch(double radius, PeriodicBox<D> box)
   }
 }
 
-// The rows of the scan, in particle order and sorted by j, with r_ij and |r_ij|.
+// The rows of the scan, in particle order and sorted by j.
 template <int D>
-template <class MinImage>
-void NeighbourSearch<D>::Impl::copyRows(NeighbourList<D>& out, bool periodic, const MinImage& minImage) {
+void NeighbourSearch<D>::Impl::copyRows(NeighbourList<D>& out) {
   Impl& m = *this;
   const Index n = Index(out.offset.size()) - 1;
   const Index* offset = out.offset.data();
   const Index* sorted = m.sorted.data();
-  const Index* rank = m.rank.data();
-  const Vec<D>* xs = m.xs.data();
   const std::size_t numPairs = std::size_t(offset[n]);
   out.j.resize(numPairs);
-  out.rij.resize(numPairs);
-  out.r.resize(numPairs);
   Index* oj = out.j.data();
-  Vec<D>* orij = out.rij.data();
-  double* orr = out.r.data();
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     Index* src = m.found[m.rowThread[i]].data() + m.rowStart[i];
     const Index len = offset[i + 1] - offset[i];
-    const Vec<D> xi = xs[rank[i]];
     const Index p0 = offset[i];
     for (int attempt = 0; attempt < 2; ++attempt) {
       bool isSorted = true;
       Index last = -1;
       for (Index t = 0; t < len; ++t) {
-        const Index l = src[t], j = sorted[l];
-        Vec<D> d = xi - xs[l];
-        if (periodic) minImage(d);
+        const Index j = sorted[src[t]];
         isSorted &= (j > last);
         last = j;
         oj[p0 + t] = j;
-        orij[p0 + t] = d;
-        orr[p0 + t] = std::sqrt(d.squaredNorm());
       }
       if (isSorted) break;
       // rare (particles not in cell order, or a periodic wrap): sort and redo
@@ -386,7 +373,10 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
     }
   }
   for (Index i = 0; i < n; ++i) offset[i + 1] += offset[i];
-  m.copyRows(out, periodic, minImage);
+  m.copyRows(out);
+  out.x = &x;
+  out.box = box_;
+  out.periodic = periodic;
 }
 
 template <int D>
@@ -409,8 +399,9 @@ void bruteForceNeighbours(const std::vector<Vec<D>>& x, double radius, const Per
   const std::size_t n = x.size();
   out.offset.assign(n + 1, 0);
   out.j.clear();
-  out.rij.clear();
-  out.r.clear();
+  out.x = &x;
+  out.box = box;
+  out.periodic = box.any();
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i) continue;
@@ -418,8 +409,6 @@ void bruteForceNeighbours(const std::vector<Vec<D>>& x, double radius, const Per
       const double r = d.norm();
       if (r < radius) {
         out.j.push_back(Index(j));
-        out.rij.push_back(d);
-        out.r.push_back(r);
       }
     }
     out.offset[i + 1] = Index(out.j.size());

@@ -1,10 +1,14 @@
 // Neighbour lists in compressed-row (CSR) form, built by a cell-linked list
 // in O(N) and reused by every pass of a step (docs/method.md 13 step 1).
-// Pair data are stored per pair, contiguously: neighbour index j (j != i),
-// r_ij = r_i - r_j (minimum image in periodic directions) and |r_ij|.
+// Per pair only the neighbour index j (j != i) is stored; r_ij = r_i - r_j (minimum
+// image in periodic directions) and |r_ij| are computed from the positions the list
+// was built on, where a pass needs them: 4 bytes a pair instead of 4 + 8 D + 8, the
+// same values, and always those of the positions' current values (a pass after the
+// particles moved within the step sees the moved pairs, as a refreshed list would).
 #pragma once
 #include "core/types.hpp"
 #include <array>
+#include <cmath>
 #include <memory>
 
 namespace shizuku {
@@ -25,8 +29,18 @@ template <int D>
 struct NeighbourList {
   std::vector<Index> offset;  // size N+1; pairs of i are [offset[i], offset[i+1])
   std::vector<Index> j;       // neighbour index
-  std::vector<Vec<D>> rij;    // r_i - r_j
-  std::vector<double> r;      // |r_ij|
+  // The positions the list was built on: the caller's array, which must outlive the
+  // list's use and keep its address (ParticleSet::position does); and its periodicity.
+  const std::vector<Vec<D>>* x = nullptr;
+  PeriodicBox<D> box;
+  bool periodic = false;
+  // r_ij = r_i - r_j of pair p of row i, and |r_ij|.
+  Vec<D> rij(std::size_t i, std::size_t p) const {
+    const Vec<D>& xi = (*x)[i];
+    const Vec<D>& xj = (*x)[std::size_t(j[p])];
+    return periodic ? box.difference(xi, xj) : Vec<D>(xi - xj);
+  }
+  double r(std::size_t i, std::size_t p) const { return std::sqrt(rij(i, p).squaredNorm()); }
   std::size_t numParticles() const { return offset.empty() ? 0 : offset.size() - 1; }
   std::size_t numPairs() const { return j.size(); }
   Index begin(std::size_t i) const { return offset[i]; }

@@ -38,19 +38,20 @@ struct FreeSurfaceRow {
   }
 
   // a_ij of pair k and the depth d_ij of j below i; a = 0 where j is not used.
-  static double weight(const FlowState<D>& s, Index k, const Vec<D>& inward, double& d) {
+  static double weight(const FlowState<D>& s, std::size_t i, Index k, const Vec<D>& inward, double& d) {
     const auto& nl = s.neighbours;
     const Index j = nl.j[k];
-    d = -nl.rij[k].dot(inward);  // r_ij = r_i - r_j
+    const Vec<D> rij = nl.rij(i, k);
+    d = -rij.dot(inward);  // r_ij = r_i - r_j
     if (!(d > 0) || !s.isFluid(j) || s.surfaceClass(j) == SurfaceClass::splash) return 0;
-    return s.weights.w[k] * d / nl.r[k];
+    return s.weights.w[k] * d / std::sqrt(rij.squaredNorm());
   }
 
   // sum_j a_ij d_ij: positive when some usable neighbour lies deeper than i.
   static double depthMoment(const FlowState<D>& s, std::size_t i, const Vec<D>& inward) {
     const auto& nl = s.neighbours;
     double m = 0, d = 0;
-    for (Index k = nl.begin(i); k < nl.end(i); ++k) m += weight(s, k, inward, d) * d;
+    for (Index k = nl.begin(i); k < nl.end(i); ++k) m += weight(s, i, k, inward, d) * d;
     return m;
   }
 };

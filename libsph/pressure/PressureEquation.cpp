@@ -74,7 +74,7 @@ bool PressureEquation<D>::countRows(const FlowState<D>& s) {
     double d = 0;
     if (unknown_[i] == 2)
       for (Index k = nl.begin(i); k < nl.end(i); ++k)
-        c += unknown_[nl.j[k]] && FreeSurfaceRow<D>::weight(s, k, inward_[i], d) > 0;
+        c += unknown_[nl.j[k]] && FreeSurfaceRow<D>::weight(s, std::size_t(i), k, inward_[i], d) > 0;
     else if (unknown_[i])
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const Index j = nl.j[k];
@@ -139,7 +139,7 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
       if (!mMatrix) ++fallbacks;
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const Index j = nl.j[k];
-        const double c = V * (mMatrix ? s.weights.lapW[k] : -2.0 * s.kernel.dwdr(nl.r[k]) / nl.r[k]);
+        const double c = V * (mMatrix ? s.weights.lapW[k] : -2.0 * s.kernel.dwdr(nl.r(std::size_t(i), k)) / nl.r(std::size_t(i), k));
         diag += c;
         if (!unknown_[j]) {
           if (hasPrescribedPressure(s, j)) known += c * s.particles.pressure[j];
@@ -192,7 +192,7 @@ void PressureEquation<D>::fillSurfaceRow(const FlowState<D>& s, long i, Index po
   const Vec<D>& inward = inward_[i];
   double sumA = 0, sumAD = 0, d = 0;
   for (Index k = nl.begin(i); k < nl.end(i); ++k) {
-    const double a = FreeSurfaceRow<D>::weight(s, k, inward, d);
+    const double a = FreeSurfaceRow<D>::weight(s, std::size_t(i), k, inward, d);
     sumA += a;
     sumAD += a * d;
   }
@@ -200,7 +200,7 @@ void PressureEquation<D>::fillSurfaceRow(const FlowState<D>& s, long i, Index po
   Index diagPos = -1;
   for (Index k = nl.begin(i); k < nl.end(i); ++k) {
     const Index j = nl.j[k];
-    const double a = FreeSurfaceRow<D>::weight(s, k, inward, d);
+    const double a = FreeSurfaceRow<D>::weight(s, std::size_t(i), k, inward, d);
     if (!(a > 0) || !unknown_[j]) continue;
     if (diagPos < 0 && j > i) { diagPos = pos; col[pos++] = int(i); }
     col[pos] = int(j);

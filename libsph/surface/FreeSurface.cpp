@@ -88,10 +88,12 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
     Vec<D> gc = Vec<D>::Zero();
     Mat<D> L = Mat<D>::Zero();                       // position-gradient matrix, 3D only
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
-      const double dw = s.kernel.dwdr(nl.r[k]);
-      div -= V * dw * nl.r[k];                       // -V r_ij . (dw/dr r_ij / r)
-      gc += V * (dw / nl.r[k]) * nl.rij[k];          // sum V gradW_ij: points toward the neighbours
-      if constexpr (D == 3) L.noalias() -= (V * dw / nl.r[k]) * nl.rij[k] * nl.rij[k].transpose();
+      const Vec<D> rij = nl.rij(std::size_t(i), k);
+      const double r = std::sqrt(rij.squaredNorm());
+      const double dw = s.kernel.dwdr(r);
+      div -= V * dw * r;                             // -V r_ij . (dw/dr r_ij / r)
+      gc += V * (dw / r) * rij;                      // sum V gradW_ij: points toward the neighbours
+      if constexpr (D == 3) L.noalias() -= (V * dw / r) * rij * rij.transpose();
     }
     s.divR[i] = div;
     const double indicator = surfaceIndicator<D>(div, L);
@@ -121,10 +123,10 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
     if (ni.squaredNorm() == 0) continue;
     bool covered = false;
     for (Index k = nl.begin(i); k < nl.end(i) && !covered; ++k) {
-      const Vec<D> rji = -nl.rij[k];
-      const double r2 = nl.r[k] * nl.r[k];
+      const Vec<D> rji = -nl.rij(std::size_t(i), k);
+      const double r = std::sqrt(rji.squaredNorm()), r2 = r * r;
       if (r2 < coneRadius2) {
-        covered = ni.dot(rji) > cosCone * nl.r[k];
+        covered = ni.dot(rji) > cosCone * r;
       } else {
         covered = (rji - h * ni).squaredNorm() < h * h;
       }
@@ -143,7 +145,7 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
       const std::uint8_t cj = P.surface[nl.j[k]];
       if ((cj == std::uint8_t(SurfaceClass::free) || cj == std::uint8_t(SurfaceClass::splash)) &&
-          nl.r[k] < rv) {
+          nl.r(std::size_t(i), k) < rv) {
         P.surface[i] = 4;  // provisional mark, resolved below (keeps the scan order-independent)
         break;
       }

@@ -31,7 +31,7 @@ bool fitOne(const FlowState<D>& s, std::size_t i, const SurfaceFitSettings& set,
     const Index j = nl.j[k];
     if (!s.isFluid(j) || !isFreeSurfaceClass(s.surfaceClass(j)) || !(w[k] > 0)) continue;
     sumW += w[k];
-    c -= w[k] * nl.rij[k];
+    c -= w[k] * nl.rij(i, k);
     ++count;
   }
   if (count < D) return false;
@@ -41,7 +41,7 @@ bool fitOne(const FlowState<D>& s, std::size_t i, const SurfaceFitSettings& set,
   for (Index k = nl.begin(i); k < nl.end(i); ++k) {
     const Index j = nl.j[k];
     if (!s.isFluid(j) || !isFreeSurfaceClass(s.surfaceClass(j)) || !(w[k] > 0)) continue;
-    const Vec<D> y = -nl.rij[k] - c;
+    const Vec<D> y = -nl.rij(i, k) - c;
     cov.noalias() += w[k] * y * y.transpose();
   }
   Eigen::SelfAdjointEigenSolver<Mat<D>> es(cov);
@@ -70,7 +70,7 @@ double curvatureSum(const FlowState<D>& s, std::size_t i) {
   for (Index k = nl.begin(i); k < nl.end(i); ++k) {
     const Index j = nl.j[k];
     if (!s.isFluid(j) || !isFreeSurfaceClass(s.surfaceClass(j)) || !isUnit<D>(nrm[j])) continue;
-    const Vec<D> g = corrected ? s.weights.gradW[k] : s.kernel.gradW(nl.rij[k], nl.r[k]);
+    const Vec<D> g = corrected ? s.weights.gradW[k] : s.kernel.gradW(nl.rij(i, k), nl.r(i, k));
     sum += (nrm[j] - nrm[i]).dot(g);
   }
   return sum * s.V() * s.d0;

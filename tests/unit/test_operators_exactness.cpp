@@ -216,7 +216,7 @@ BOOST_AUTO_TEST_CASE(weights_layout_and_reuse) {
   for (std::size_t i = 0; i < x.size(); ++i) {
     for (Index p = s.nl.begin(i); p < s.nl.end(i); ++p) {
       if (mask[i]) {
-        BOOST_TEST_REQUIRE(s.pw.w[p] == s.kernel.w(s.nl.r[p]));
+        BOOST_TEST_REQUIRE(s.pw.w[p] == s.kernel.w(s.nl.r(i, p)));
       } else {
         BOOST_TEST_REQUIRE(s.pw.w[p] == 0.0);
         BOOST_TEST_REQUIRE(s.pw.gradW[p].norm() == 0.0);
