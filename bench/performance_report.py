@@ -86,6 +86,12 @@ GROUPS = [("neighbours", ["neighbours"]), ("weights", ["weights"]), ("density", 
           ("other", ["functionObjects", "output"])]
 
 
+# The 3D memory measured by hand after the changes of 2026-12-04 (the threeD part was not rerun).
+THREE_D_MEMORY = ("measured 2026-12-04 on the 3D-100k case (20 steps, 2 threads, same machine, bit-for-bit the same "
+                  "results): peak RSS 592 MB (6.14 KB per particle) before, 416 MB (4.32 KB) after, and 16.5 "
+                  "against 15.8 us per fluid particle-step")
+
+
 def write(csvPath, mdPath, quick):
     rows = list(csv.DictReader(open(csvPath)))
     model, ncpu, commit = machine()
@@ -101,6 +107,12 @@ def write(csvPath, mdPath, quick):
     add(f"start of the runs: {f(min(loads), 2) if loads else '-'} to {f(max(loads), 2) if loads else '-'} "
         "(a load above 2 means other work shared the two cores: wall times of 2-thread runs are then inflated, and")
     add("the CPU-time columns are the better guide).")
+    add("")
+    add("The parts are rerun one at a time (`--only`), so their rows can come from different days and hosts:")
+    add("throughput, scaling and timestep were last run on 2026-12-04, the others (threeD, solvers, pysph) on")
+    add("2026-12-02. The host of 2026-12-04 runs the same code about 1.6 times slower per step than that of")
+    add("2026-12-02 (K&O dx = 0.01, fixed dt, 2 threads, at the commit before the changes of 2026-12-04: 1.67-1.69")
+    add("us per particle-step in three runs, against 1.08 us on 2026-12-02); compare rows of one day only.")
     add("")
     add("Units: *us/particle-step* = wall time of the run divided by (steps x fluid particles), as printed by")
     add("`shizuku` at the end of a run; *CPU* = user+system time of all threads divided the same way.")
@@ -122,8 +134,8 @@ def write(csvPath, mdPath, quick):
         tot = sum(st.values()) or 1
         top = sorted(st.items(), key=lambda kv: -kv[1])[:3]
         why = ", ".join(f"{k} {100 * v / tot:.0f} %" for k, v in top)
-        add(f"| full step <= 1.5 us/particle-step at 20k particles, 2 threads | {f(us)} us (CPU {f(r20['cpuUsPerParticleStep'])} us, "
-            f"load {f(r20['load'], 2)}) | {'yes' if us <= 1.5 else 'no'} | largest stages: {why}. "
+        add(f"| full step <= 1.0 us/particle-step at 20k particles, 2 threads (issue 23) | {f(us)} us (CPU {f(r20['cpuUsPerParticleStep'])} us, "
+            f"load {f(r20['load'], 2)}) | {'yes' if us <= 1.0 else 'no'} | largest stages: {why}. "
             "See 'What remains' |")
     ps = find(rows, "pysph", "KO-dx0.03-pysph-sisph")
     sh = find(rows, "pysph", "KO-dx0.03-shizuku")
@@ -149,12 +161,16 @@ def write(csvPath, mdPath, quick):
     ad = find(rows, "timestep", "KO-dx0.01-adaptive")
     if ad:
         w = float(ad["wall"]) / float(ad["simTime"])
-        add(f"| <= 60 wall s per simulated s at dx = 0.01 | {f(w)} s/s, CPU {f(float(ad['cpu']) / float(ad['simTime']))} "
-            f"s/s (adaptive dt, {ad['steps']} steps to "
-            f"t = {f(ad['simTime'])} s, load {f(ad['load'], 2)}) | {'yes' if w <= 60 else 'no'} | cost per step "
-            "(row 1) times steps per simulated s (CFL-limited, maxCo 0.2, once the front moves); maxCo 0.4: "
-            + (lambda r4: f"{f(float(r4['wall']) / float(r4['simTime']))} s/s, front error {f(extra(r4).get('frontError'))} % "
-               f"vs {f(extra(ad).get('frontError'))} %" if r4 else "not run")(find(rows, 'timestep', 'KO-dx0.01-adaptive-maxCo0.4'))
+        r5 = find(rows, "timestep", "KO-dx0.01-adaptive-maxCo0.5")
+        w5 = float(r5["wall"]) / float(r5["simTime"]) if r5 else float("nan")
+        add(f"| <= 27 wall s per simulated s at dx = 0.01, front error and density-error mode no worse than the "
+            f"default's | maxCo 0.2 (the default): {f(w)} s/s, CPU {f(float(ad['cpu']) / float(ad['simTime']))} "
+            f"s/s (adaptive dt, {ad['steps']} steps to t = {f(ad['simTime'])} s, load {f(ad['load'], 2)}); maxCo 0.5: "
+            + (f"{f(w5)} s/s ({r5['steps']} steps, load {f(r5['load'], 2)})" if r5 else "not run")
+            + f" | {'yes' if w <= 27 else 'no'} | maxCo 0.5 keeps the front error "
+            "(9.90 against 10.04 %) but the interior density-error mode grows from -0.125 to -0.189 % and impact "
+            "pressure loses its first peak (see 'How large a step'): the default stays 0.2. What a step costs: row 1 "
+            "(the PPE solve takes 9 iterations at maxCo 0.5, 5-7 at fixed 1e-4 s)"
             + " (see 'Adaptive time step') |")
     s20 = find(rows, "scaling", "KO-20k")
     s320 = find(rows, "scaling", "KO-320k") or find(rows, "scaling", "KO-80k")
@@ -173,13 +189,18 @@ def write(csvPath, mdPath, quick):
             dn = float(s320["total"]) - float(s80["total"])
             marg = f"; marginal {f(dm / dn)} B (80k to 320k)"
         add(f"| <= 2 KB memory per particle | {f(bpp)} B per particle (peak RSS / all particles, {s320['case']}){marg} "
-            f"| {'yes' if bpp <= 2048 else 'no'} | heaptrack, 2026-11-30 (dam break d0 = 5 mm, 20.8k particles, "
-            "heap peak 58.9 MB = 2.83 KB per particle): neighbour list (index, r_ij, abs r_ij, search scratch) 590 B, "
-            "pair weights (W, corrected gradient, Laplacian) 590 B, PPE matrix 250 B, AMG hierarchy with the "
-            "temporaries of its setup (Eigen sparse products) about 900 B at the peak, Krylov vectors 65 B, fields "
-            "the rest. What would move it: recomputing r_ij and its length from the positions instead of storing "
-            "them (-440 B), an AMG setup without Eigen's product temporaries (-400 B at the peak); single-precision "
-            "AMG levels were tried (no speed gain at 20k: the levels fit in cache) and not kept |")
+            f"| {'yes' if bpp <= 2048 else 'no'} | Measured 2026-12-04, same machine, peak RSS per particle of the K&O "
+            "runs (30 steps, 2 threads), bit-for-bit the same results at every stage: before 3.90 KB (80k) and "
+            "3.51 KB (320k); with the AMG setup's products built in place (SparseProducts: no Eigen product "
+            "temporaries) 3.36 and 2.99 KB; with r_ij and |r_ij| computed from the positions where a pass uses "
+            "them (the list stores only j: -24 B a pair in 2D, -32 B in 3D) 3.03 and 2.61 KB. heaptrack at 86k "
+            "before the second change (heap peak 236.5 MB = 2.75 KB per particle): 1.68M pairs, their arrays "
+            "1.1 KB per particle (r_ij 16 B, corrected gradient 16 B, W 8 B, Laplacian 8 B, index 4 B, search "
+            "scratch 4 B), the per-particle fields about 0.3 KB, the PPE matrix, AMG hierarchy and Krylov "
+            "vectors the rest. What would move it further: the search scratch freed after the build (-4 B a "
+            "pair), W recomputed from |r_ij| (-8 B a pair), the AMG's restriction applied as P^T instead of "
+            "stored; single-precision AMG levels were tried (no speed gain at 20k: the levels fit in cache) and "
+            "not kept |")
     # 3D targets (issue 19): per particle of every kind, 2 threads.
     t100 = find(rows, "threeD", "3D-100k", 2)
     if t100:
@@ -200,7 +221,8 @@ def write(csvPath, mdPath, quick):
         worst, bpp = max(perParticle.items(), key=lambda kv: kv[1])
         add(f"| 3D: <= 4 KB memory per particle | {f(bpp)} B (largest peak RSS / all particles, {worst}) | "
             f"{'yes' if bpp <= 4096 else 'no'} | a 3D fluid particle has about 60 neighbours (2D: 13): the pair "
-            "arrays (index, r_ij, abs r_ij, W, the SPH2 gradient and Laplacian weights) and the PPE rows grow with them |")
+            "arrays (index, W, the SPH2 gradient and Laplacian weights: 44 B a pair since 2026-12-04, 76 B before) "
+            "and the PPE rows grow with them. The rows of this table are from before 2026-12-04; " + THREE_D_MEMORY + " |")
     add("")
 
     # ---------------------------------------------------------- 3D
@@ -381,6 +403,8 @@ def write(csvPath, mdPath, quick):
         add("(0.25 sqrt(h/|g|)) limits, growing at most 1.2x per step (libsph/isph/TimeLoop.cpp chooseDeltaT).")
     add("")
 
+    timestep_study(add)
+
     # ---------------------------------------------------------- pysph
     add("## Against PySPH SISPH (dam_break_2d, dx = 0.03 m)")
     add("")
@@ -411,7 +435,7 @@ def write(csvPath, mdPath, quick):
     add("  in 20 steps after a warm-up with BiCGSTAB + ILU0, diagonal, or AMG between two rebuilds of its")
     add("  hierarchy, at 2 threads (once, under load, 1 allocation was seen: a buffer reaching a new largest size;")
     add("  the test allows 5 per 20 steps, a stage allocating every step gives 20 or more). A rebuild of the AMG")
-    add("  hierarchy (every 10 steps) allocates (~180 per rebuild at 1.5k unknowns, Eigen's sparse products).")
+    add("  hierarchy (every 10 steps) allocates its levels (the products are built in place, no temporaries).")
     add("  libgomp allocates its team structure in every parallel region that runs on one thread (1-thread runs")
     add("  and the AMG's small levels): counted apart, not ours to change. Around the steps, run() allocated 180")
     add("  times per 40 steps before this work (a copy of every field at each reordering, the controlDict path")
@@ -427,10 +451,13 @@ def write(csvPath, mdPath, quick):
         tot = sum(st.values()) or 1
         add("At 20k particles on 2 threads the split of a step is: " +
             ", ".join(f"{k} {100 * v / tot:.0f} %" for k, v in sorted(st.items(), key=lambda kv: -kv[1])[:6]) + ".")
-    add("- The PPE solve: the AMG setup (Eigen sparse products, one thread) runs every 10 steps and at each")
-    add("  reordering; a parallel setup, or keeping the hierarchy across reorderings by permuting it, would cut")
-    add("  the AMG-everyStep / AMG difference further. A looser tolerance (1e-6) would cut iterations but")
-    add("  changes accuracy and was not adopted.")
+    add("- The PPE solve: the AMG setup runs every 10 steps and at each reordering. Its products are")
+    add("  row-parallel since 2026-12-04 (SparseProducts), but measured on the K&O 20k systems (bench_pressure,")
+    add("  best of 5 passes, shared machine) a setup still costs about 20 ms on one thread and on two (AMG")
+    add("  rebuilt every step against kept: 42-47 against 21-22 ms per solve): the products count their rows")
+    add("  before filling them, the aggregation is sequential, and the levels below 8192 rows run on one thread.")
+    add("  Keeping the hierarchy across reorderings by permuting it would halve the setups. A looser tolerance")
+    add("  (1e-6) would cut iterations but changes accuracy and was not adopted.")
     add("- The AMG's levels below 8192 rows run on one thread (measured 2026-11-30 at 20k, idle machine, PASSIVE: lowering")
     add("  the bound to 2048 or 512 rows did not speed up the 2-thread solve); single-precision levels (half the")
     add("  bytes per cycle) gave no gain at 20k either, where the levels fit in cache, and were not kept.")
@@ -439,3 +466,37 @@ def write(csvPath, mdPath, quick):
     add("")
     with open(mdPath, "w") as fo:
         fo.write("\n".join(L) + "\n")
+
+
+def timestep_study(add):
+    """The accuracy-against-maxCo table of bench/timestep-study (its own CSV)."""
+    path = os.path.join(ROOT, "bench/results/timestep-study.csv")
+    if not os.path.exists(path):
+        return
+    rows = [r for r in csv.DictReader(open(path)) if str(r["status"]) == "0"]
+    if not rows:
+        return
+    add("## How large a step the method tolerates (bench/timestep-study)")
+    add("")
+    add("Adaptive step, every other setting the default; maxCo alone changed. Each cell gives the one-thread and")
+    add("the two-thread run (different trajectories: their spread is the chance part of a measure). K&O: dam")
+    add("break at dx = 0.01 m to t = 0.5 s; front error against Koshizuka & Oka (1996); density error (eq. 22,")
+    add("interior, every step) mode and mean averaged over the run. Buchner: tutorials/damBreakWallPressure at")
+    add("H/30 with maxDeltaT lifted so that maxCo sets the step; sensor P1 against Buchner (2002): plateau noise")
+    add("(bound of issue 18: 0.02), first filtered peak (experiment 0.69), plateau mean (0.54); the interior")
+    add("probe's noise. Wall times of this study were taken on a shared machine and are not quoted.")
+    add("")
+    cols = [("ko", "steps", "K&O steps", "{:.0f}"), ("ko", "frontError", "K&O front error %", "{:.2f}"),
+            ("ko", "densityMode", "K&O density mode %", "{:.3f}"), ("buchner", "steps", "Buchner steps", "{:.0f}"),
+            ("buchner", "sensorNoise", "P1 noise", "{:.3f}"), ("buchner", "interiorNoise", "interior noise", "{:.3f}"),
+            ("buchner", "peak1", "P1 peak 1", "{:.2f}"), ("buchner", "plateau", "P1 plateau", "{:.2f}")]
+    add("| maxCo | " + " | ".join(c[2] for c in cols) + " |")
+    add("|---" * (len(cols) + 1) + "|")
+    for maxCo in sorted({float(r["maxCo"]) for r in rows}):
+        cells = []
+        for case, key, _, spec in cols:
+            vals = [spec.format(float(r[key])) for r in sorted(rows, key=lambda r: int(r["threads"]))
+                    if r["case"] == case and float(r["maxCo"]) == maxCo and r.get(key) not in (None, "")]
+            cells.append(" / ".join(vals) if vals else "-")
+        add(f"| {maxCo:g} | " + " | ".join(cells) + " |")
+    add("")
