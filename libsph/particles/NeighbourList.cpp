@@ -39,16 +39,6 @@ void PeriodicBox<D>::wrap(Vec<D>& x) const {
   }
 }
 
-template <int D>
-Vec<D> PeriodicBox<D>::difference(const Vec<D>& a, const Vec<D>& b) const {
-  Vec<D> d = a - b;
-  for (int k = 0; k < D; ++k) {
-    if (!periodic[k]) continue;
-    const double L = hi[k] - lo[k];
-    d[k] -= L * std::nearbyint(d[k] / L);
-  }
-  return d;
-}
 
 // ---------------------------------------------------------------- Impl
 // Cells along axis a of a grid of cell size cs over [mn, mx]; periodic: the box's

@@ -21,8 +21,17 @@ struct PeriodicBox {
   bool any() const { for (bool p : periodic) if (p) return true; return false; }
   // Wrap a position into the box in periodic directions.
   void wrap(Vec<D>& x) const;
-  // Minimum-image difference a - b.
-  Vec<D> difference(const Vec<D>& a, const Vec<D>& b) const;
+  // Minimum-image difference a - b (inline: the pair loops call it through
+  // NeighbourList::rij, and an opaque call would keep them from hoisting their loads).
+  Vec<D> difference(const Vec<D>& a, const Vec<D>& b) const {
+    Vec<D> d = a - b;
+    for (int k = 0; k < D; ++k) {
+      if (!periodic[k]) continue;
+      const double L = hi[k] - lo[k];
+      d[k] -= L * std::nearbyint(d[k] / L);
+    }
+    return d;
+  }
 };
 
 template <int D>
