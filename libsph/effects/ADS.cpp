@@ -61,7 +61,7 @@ void ADS<D>::correctPositions(FlowState<D>& s) {
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const Index j = nl.j[k];
         const Vec<D> rij = nl.rij(std::size_t(i), k);
-        const double r = std::sqrt(rij.squaredNorm()), dAds = s.isFluid(j) ? dFluid : dWall;
+        const double r = rij.norm(), dAds = s.isFluid(j) ? dFluid : dWall;
         if (!(r < dAds) || !(r > 0)) continue;
         const bool mj = moved(j);
         if (!mi && !mj) continue;

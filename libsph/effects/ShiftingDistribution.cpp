@@ -103,7 +103,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     Vec<D> sum = Vec<D>::Zero();
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
       const Vec<D> rij = nl.rij(std::size_t(i), k);
-      const double r = std::sqrt(rij.squaredNorm());
+      const double r = rij.norm();
       if (!(r > 0)) continue;
       if (ops) {
         double wv, dw;

@@ -37,7 +37,7 @@ void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& d
     Vec<D> sum = Vec<D>::Zero();
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
       const Vec<D> rij = nl.rij(std::size_t(i), k);
-      const double r = std::sqrt(rij.squaredNorm());
+      const double r = rij.norm();
       if (!(r < rStar) || !(r > 0)) continue;
       const Index j = nl.j[k];
       // A neighbour's own density counts only when its kernel sum is whole: a wall, or a

@@ -19,7 +19,7 @@ Mat<D> Ops<D>::hessian(const Kernel<D>& kernel, double V, const NeighbourList<D>
   Eigen::Matrix<double, NB, 1> rhs = Eigen::Matrix<double, NB, 1>::Zero(), P, phi;
   for (Index p = nl.offset[i]; p < nl.offset[i + 1]; ++p) {
     const Vec<D> rij = nl.rij(i, p);
-    const double r = std::sqrt(rij.squaredNorm());
+    const double r = rij.norm();
     if (!(r > 0)) continue;  // coincident particles carry no information
     double w, dw;
     kernel.eval(r, w, dw);

@@ -311,7 +311,7 @@ inline void standardRow(double h, const NeighbourList<D>& nl, std::size_t i, Ind
   const double invH2 = 1.0 / (h * h);
   for (Index p = b; p < e; ++p) {
     const double c = out.lapW[p] * invH2;  // kappa = c h^2
-    out.gradW[p] = -c * nl.rij(i, p);         // c r_ji
+    out.gradW[p] = -c * nl.rij(i, p);  // c r_ji
     out.lapW[p] = 2.0 * c;
   }
 }

@@ -39,7 +39,6 @@ void PeriodicBox<D>::wrap(Vec<D>& x) const {
   }
 }
 
-
 // ---------------------------------------------------------------- Impl
 // Cells along axis a of a grid of cell size cs over [mn, mx]; periodic: the box's
 // length in whole cells, at least one.
@@ -364,9 +363,7 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
   }
   for (Index i = 0; i < n; ++i) offset[i + 1] += offset[i];
   m.copyRows(out);
-  out.x = &x;
-  out.box = box_;
-  out.periodic = periodic;
+  out.attach(x, box_);
 }
 
 template <int D>
@@ -389,9 +386,7 @@ void bruteForceNeighbours(const std::vector<Vec<D>>& x, double radius, const Per
   const std::size_t n = x.size();
   out.offset.assign(n + 1, 0);
   out.j.clear();
-  out.x = &x;
-  out.box = box;
-  out.periodic = box.any();
+  out.attach(x, box);
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i) continue;

@@ -39,17 +39,23 @@ struct NeighbourList {
   std::vector<Index> offset;  // size N+1; pairs of i are [offset[i], offset[i+1])
   std::vector<Index> j;       // neighbour index
   // The positions the list was built on: the caller's array, which must outlive the
-  // list's use and keep its address (ParticleSet::position does); and its periodicity.
+  // list's use and keep its address (ParticleSet::position does); and its periodicity
+  // (`periodic` caches box.any() for the pair loops). Set by attach().
   const std::vector<Vec<D>>* x = nullptr;
   PeriodicBox<D> box;
   bool periodic = false;
+  void attach(const std::vector<Vec<D>>& positions, const PeriodicBox<D>& b) {
+    x = &positions;
+    box = b;
+    periodic = b.any();
+  }
   // r_ij = r_i - r_j of pair p of row i, and |r_ij|.
   Vec<D> rij(std::size_t i, std::size_t p) const {
     const Vec<D>& xi = (*x)[i];
     const Vec<D>& xj = (*x)[std::size_t(j[p])];
     return periodic ? box.difference(xi, xj) : Vec<D>(xi - xj);
   }
-  double r(std::size_t i, std::size_t p) const { return std::sqrt(rij(i, p).squaredNorm()); }
+  double r(std::size_t i, std::size_t p) const { return rij(i, p).norm(); }
   std::size_t numParticles() const { return offset.empty() ? 0 : offset.size() - 1; }
   std::size_t numPairs() const { return j.size(); }
   Index begin(std::size_t i) const { return offset[i]; }

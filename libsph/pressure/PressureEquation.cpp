@@ -139,7 +139,8 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
       if (!mMatrix) ++fallbacks;
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const Index j = nl.j[k];
-        const double c = V * (mMatrix ? s.weights.lapW[k] : -2.0 * s.kernel.dwdr(nl.r(std::size_t(i), k)) / nl.r(std::size_t(i), k));
+        const double r = mMatrix ? 0.0 : nl.r(std::size_t(i), k);
+        const double c = V * (mMatrix ? s.weights.lapW[k] : -2.0 * s.kernel.dwdr(r) / r);
         diag += c;
         if (!unknown_[j]) {
           if (hasPrescribedPressure(s, j)) known += c * s.particles.pressure[j];

@@ -89,7 +89,7 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
     Mat<D> L = Mat<D>::Zero();                       // position-gradient matrix, 3D only
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
       const Vec<D> rij = nl.rij(std::size_t(i), k);
-      const double r = std::sqrt(rij.squaredNorm());
+      const double r = rij.norm();
       const double dw = s.kernel.dwdr(r);
       div -= V * dw * r;                             // -V r_ij . (dw/dr r_ij / r)
       gc += V * (dw / r) * rij;                      // sum V gradW_ij: points toward the neighbours
@@ -124,7 +124,7 @@ void FreeSurfaceDetector<D>::detect(FlowState<D>& s) const {
     bool covered = false;
     for (Index k = nl.begin(i); k < nl.end(i) && !covered; ++k) {
       const Vec<D> rji = -nl.rij(std::size_t(i), k);
-      const double r = std::sqrt(rji.squaredNorm()), r2 = r * r;
+      const double r = rji.norm(), r2 = r * r;
       if (r2 < coneRadius2) {
         covered = ni.dot(rji) > cosCone * r;
       } else {
