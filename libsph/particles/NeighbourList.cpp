@@ -341,7 +341,13 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
       std::size_t candidates = 0;
       for (int q = 0; q < nr; ++q) candidates += std::size_t(ranges[2 * q + 1] - ranges[2 * q]);
       for (Index k = b; k < e; ++k) {
-        if (found.size() < used + candidates) found.resize(std::max(2 * found.size(), used + candidates));
+        if (found.size() < used + candidates) {
+          // Grown by a quarter, not doubled: the buffers stay allocated between builds,
+          // so their slack counts in every step's peak memory.
+          const std::size_t grown = std::max(found.size() + found.size() / 4, used + candidates);
+          found.reserve(grown);
+          found.resize(grown);
+        }
         Index* dst = found.data() + used;
         const Vec<D> xi = xs[k];
         std::size_t cnt = 0;
