@@ -48,6 +48,11 @@ constexpr int kSweeps = 1;            // hybrid Gauss-Seidel sweeps before and a
 // cost more than the work, and on a shared machine every barrier can wait for a
 // descheduled thread.
 constexpr int kParallelRows = 8192;
+// Row-wise products (residual, restriction, prolongation) go parallel by their
+// entries instead: their rows are independent, so the result is the same on any
+// number of threads, and a coarse level's restriction holds several times more
+// entries per row than the finest level's matrix.
+constexpr long kParallelEntries = 65536;
 constexpr int kCoarsest = 400;    // dense LU at or below this size
 constexpr int kMaxLevels = 12;
 
@@ -151,7 +156,7 @@ void spmv(const SparseMatrixR& M, const double* x, double* y) {
   const int* outer = M.outerIndexPtr();
   const int* col = M.innerIndexPtr();
   const double* val = M.valuePtr();
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
+#pragma omp parallel for schedule(static) if (M.nonZeros() > kParallelEntries)
   for (int i = 0; i < n; ++i) {
     double s = 0;
     for (int p = outer[i]; p < outer[i + 1]; ++p) s += val[p] * x[col[p]];
@@ -210,7 +215,9 @@ void AggregationAMG::build(const SparseMatrixR& A) {
     const std::vector<double> d = diagonal(*cur);
     L.invDiag.resize(n);
     for (int i = 0; i < n; ++i) L.invDiag[i] = d[i] != 0 ? 1.0 / d[i] : 0.0;
-    for (auto* v : {&L.x, &L.b, &L.r, &L.old}) v->assign(n, 0.0);
+    // Level 0's right-hand side and solution are the caller's vectors (apply).
+    for (auto* v : {&L.x, &L.b}) v->assign(l == 0 ? 0 : n, 0.0);
+    for (auto* v : {&L.r, &L.old}) v->assign(n, 0.0);
     std::vector<int> agg;
     const int nc = (n <= kCoarsest || l + 1 >= kMaxLevels) ? 0 : aggregate(*cur, d, wide_, agg);
     if (nc == 0 || nc > 0.9 * n) {
@@ -228,14 +235,12 @@ void AggregationAMG::build(const SparseMatrixR& A) {
       }
       return;
     }
-    SparseMatrixR P, R, AP, Ac;
+    SparseMatrixR P, R, Ac;
     smoothedProlongator(*cur, L.invDiag, agg, nc, kOmega, P);
     if (wide_) truncate(P);
     P.prune(0.0);
     transposeSparse(P, R);
-    multiplySparse(*cur, P, AP);
-    multiplySparse(R, AP, Ac);
-    AP = SparseMatrixR();  // freed before the next level's setup
+    galerkinProduct(R, *cur, P, Ac);
     Ac.prune(0.0);
     L.P = std::move(P);
     L.R = std::move(R);
@@ -245,15 +250,13 @@ void AggregationAMG::build(const SparseMatrixR& A) {
   }
 }
 
-void AggregationAMG::smooth(int l, const SparseMatrixR& A, bool forward) const {
+void AggregationAMG::smooth(int l, const SparseMatrixR& A, const double* b, double* x, bool forward) const {
   const Level& L = levels_[l];
   const int n = int(A.rows());
   const int* outer = A.outerIndexPtr();
   const int* col = A.innerIndexPtr();
   const double* val = A.valuePtr();
-  double* x = L.x.data();
   double* old = L.old.data();
-  const double* b = L.b.data();
   const double* inv = L.invDiag.data();
 #pragma omp parallel if (n > kParallelRows)
   {
@@ -261,13 +264,17 @@ void AggregationAMG::smooth(int l, const SparseMatrixR& A, bool forward) const {
     const int lo = int(long(n) * t / T), hi = int(long(n) * (t + 1) / T);
     for (int i = lo; i < hi; ++i) old[i] = x[i];
 #pragma omp barrier
+    // Columns ascend, so a row's entries are those before the block (old values),
+    // in it (current values, the diagonal skipped) and after it (old values): three
+    // runs summed in column order, without a test of each column against the block.
     auto row = [&](int i) {
       double s = b[i];
-      for (int p = outer[i]; p < outer[i + 1]; ++p) {
-        const int j = col[p];
-        if (j == i) continue;
-        s -= val[p] * ((j >= lo && j < hi) ? x[j] : old[j]);
-      }
+      int p = outer[i];
+      const int e = outer[i + 1];
+      for (; p < e && col[p] < lo; ++p) s -= val[p] * old[col[p]];
+      for (; p < e && col[p] < hi; ++p)
+        if (col[p] != i) s -= val[p] * x[col[p]];
+      for (; p < e; ++p) s -= val[p] * old[col[p]];
       x[i] = s * inv[i];
     };
     if (forward)
@@ -277,28 +284,53 @@ void AggregationAMG::smooth(int l, const SparseMatrixR& A, bool forward) const {
   }
 }
 
-void AggregationAMG::cycle(int l, const SparseMatrixR& A) const {
+// The first forward sweep from x = 0: every term with a column at or after the
+// diagonal, or outside the thread's block, multiplies a zero, so each row stops at its
+// diagonal (columns ascend) and neither the zeroing of x nor the copy of the old values
+// is needed; the same values as smooth(l, A, true) on x = 0.
+void AggregationAMG::smoothFromZero(int l, const SparseMatrixR& A, const double* b, double* x) const {
+  const Level& L = levels_[l];
+  const int n = int(A.rows());
+  const int* outer = A.outerIndexPtr();
+  const int* col = A.innerIndexPtr();
+  const double* val = A.valuePtr();
+  const double* inv = L.invDiag.data();
+#pragma omp parallel if (n > kParallelRows)
+  {
+    const int T = omp_get_num_threads(), t = omp_get_thread_num();
+    const int lo = int(long(n) * t / T), hi = int(long(n) * (t + 1) / T);
+    for (int i = lo; i < hi; ++i) {
+      double s = b[i];
+      int p = outer[i];
+      const int e = outer[i + 1];
+      while (p < e && col[p] < lo) ++p;
+      for (; p < e && col[p] < i; ++p) s -= val[p] * x[col[p]];
+      x[i] = s * inv[i];
+    }
+  }
+}
+
+void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, double* xp) const {
   const Level& L = levels_[l];
   const int n = int(A.rows());
   if (l + 1 == int(levels_.size())) {
-    Eigen::Map<const Eigen::VectorXd> b(L.b.data(), n);
-    Eigen::Map<Eigen::VectorXd> x(L.x.data(), n);
+    Eigen::Map<const Eigen::VectorXd> b(bp, n);
+    Eigen::Map<Eigen::VectorXd> x(xp, n);
     if (coarsestDense_) x.noalias() = coarse_.solve(b);
     else x = sparseCoarse_.solve(b);  // only a stalled (split-up) system gets here
     return;
   }
-  double* x = L.x.data();
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-  for (int i = 0; i < n; ++i) x[i] = 0;
-  for (int k = 0; k < kSweeps; ++k) smooth(l, A, true);
+  double* x = xp;
+  smoothFromZero(l, A, bp, x);
+  for (int k = 1; k < kSweeps; ++k) smooth(l, A, bp, x, true);
   // r = b - A x, restricted.
   {
     const int* outer = A.outerIndexPtr();
     const int* col = A.innerIndexPtr();
     const double* val = A.valuePtr();
-    const double* b = L.b.data();
+    const double* b = bp;
     double* r = L.r.data();
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
+#pragma omp parallel for schedule(static) if (A.nonZeros() > kParallelEntries)
     for (int i = 0; i < n; ++i) {
       double s = b[i];
       for (int p = outer[i]; p < outer[i + 1]; ++p) s -= val[p] * x[col[p]];
@@ -307,22 +339,23 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A) const {
   }
   const Level& C = levels_[l + 1];
   spmv(L.R, L.r.data(), C.b.data());
-  cycle(l + 1, C.A);
-  // x += P x_c (r reused as scratch).
-  spmv(L.P, C.x.data(), L.r.data());
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-  for (int i = 0; i < n; ++i) x[i] += L.r[i];
-  for (int k = 0; k < kSweeps; ++k) smooth(l, A, false);
+  cycle(l + 1, C.A, C.b.data(), C.x.data());
+  // x += P x_c.
+  {
+    const int* outer = L.P.outerIndexPtr();
+    const int* col = L.P.innerIndexPtr();
+    const double* val = L.P.valuePtr();
+    const double* xc = C.x.data();
+#pragma omp parallel for schedule(static) if (L.P.nonZeros() > kParallelEntries)
+    for (int i = 0; i < n; ++i) {
+      double s = 0;
+      for (int p = outer[i]; p < outer[i + 1]; ++p) s += val[p] * xc[col[p]];
+      x[i] += s;
+    }
+  }
+  for (int k = 0; k < kSweeps; ++k) smooth(l, A, bp, x, false);
 }
 
-void AggregationAMG::apply(const double* r, double* z) const {
-  const Level& L0 = levels_[0];
-  const int n = int(fine_->rows());
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-  for (int i = 0; i < n; ++i) L0.b[i] = r[i];
-  cycle(0, *fine_);
-#pragma omp parallel for schedule(static) if (n > kParallelRows)
-  for (int i = 0; i < n; ++i) z[i] = L0.x[i];
-}
+void AggregationAMG::apply(const double* r, double* z) const { cycle(0, *fine_, r, z); }
 
 }  // namespace shizuku

@@ -21,9 +21,11 @@
 //     after the coarse correction. The finest level always uses the current
 //     matrix; the coarse levels are kept from the last setup (the matrix changes
 //     little from one step to the next).
-// Levels below 8192 rows run on one thread. The setup's products (P, R = P^T, A P and
-// R (A P)) are SparseProducts' row-parallel ones, equal to Eigen's bit for bit and built
-// in place (the setup allocates its levels); a cycle allocates nothing.
+// Levels below 8192 rows run on one thread. The setup's products (P, R = P^T and
+// A_c = R (A P), the last without storing A P) are SparseProducts' row-parallel ones,
+// equal to Eigen's bit for bit and built in place (the setup allocates its levels); a
+// cycle allocates nothing: the finest level's right-hand side and result are the
+// caller's vectors, and the first sweep from x = 0 stops each row at its diagonal.
 // Keys: preconditioner AMG; amgReuse 10.
 #pragma once
 #include "linearSolvers/Preconditioner.hpp"
@@ -54,11 +56,13 @@ class AggregationAMG final : public Preconditioner {
     SparseMatrixR A;                   // coarse levels: R A P (level 0: unused, see fine_)
     SparseMatrixR P, R;                // to / from the next coarser level
     std::vector<double> invDiag;
-    mutable std::vector<double> x, b, r, old;
+    mutable std::vector<double> x, b, r, old;  // x, b: levels below the finest
   };
   void build(const SparseMatrixR& A);
-  void cycle(int l, const SparseMatrixR& A) const;
-  void smooth(int l, const SparseMatrixR& A, bool forward) const;
+  // One V-cycle from level l down: x = (approximately) A^-1 b.
+  void cycle(int l, const SparseMatrixR& A, const double* b, double* x) const;
+  void smooth(int l, const SparseMatrixR& A, const double* b, double* x, bool forward) const;
+  void smoothFromZero(int l, const SparseMatrixR& A, const double* b, double* x) const;
 
   int reuse_;
   bool stale_ = true;

@@ -1,13 +1,15 @@
 // Row-parallel sparse products of the AMG setup (see SparseProducts.hpp).
 #include "linearSolvers/SparseProducts.hpp"
 #include <algorithm>
+#include <memory>
 #include <omp.h>
 
 namespace shizuku {
 
 namespace {
 
-// Results with fewer rows are built on one thread (fork and barrier cost more).
+// Products over fewer rows of the fine operator are built on one thread (fork and
+// barrier cost more).
 constexpr int kParallelRows = 8192;
 
 // Builds the rows x width matrix `out` whose row i sums what visit(i, emit) emits with
@@ -15,11 +17,12 @@ constexpr int kParallelRows = 8192;
 // each row's distinct columns (a mark per column: the last row that met it), the second
 // sums into a dense row (the first value assigned, the others added, as Eigen does) and
 // writes the row sorted by column straight into `out`.
+// Rows are split between threads when `parallel`.
 template <class Visit, class Finish>
-void buildRows(int rows, int width, SparseMatrixR& out, const Visit& visit, const Finish& finish) {
+void buildRows(int rows, int width, SparseMatrixR& out, const Visit& visit, const Finish& finish, bool parallel) {
   out.resize(rows, width);  // compressed, no entries
   int* outer = out.outerIndexPtr();
-#pragma omp parallel if (rows > kParallelRows)
+#pragma omp parallel if (parallel)
   {
     std::vector<int> mark(std::size_t(width), -1);
 #pragma omp for schedule(static)
@@ -39,7 +42,7 @@ void buildRows(int rows, int width, SparseMatrixR& out, const Visit& visit, cons
   out.resizeNonZeros(outer[rows]);
   int* col = out.innerIndexPtr();
   double* val = out.valuePtr();
-#pragma omp parallel if (rows > kParallelRows)
+#pragma omp parallel if (parallel)
   {
     std::vector<int> mark(std::size_t(width), -1);
     std::vector<double> sum(static_cast<std::size_t>(width));
@@ -66,21 +69,97 @@ const auto unchanged = [](int, int, double v) { return v; };
 
 }  // namespace
 
-void multiplySparse(const SparseMatrixR& X, const SparseMatrixR& Y, SparseMatrixR& out) {
-  const int* xo = X.outerIndexPtr();
-  const int* xc = X.innerIndexPtr();
-  const double* xv = X.valuePtr();
-  const int* yo = Y.outerIndexPtr();
-  const int* yc = Y.innerIndexPtr();
-  const double* yv = Y.valuePtr();
-  const auto visit = [&](int i, const auto& emit) {
-    for (int p = xo[i]; p < xo[i + 1]; ++p) {
-      const int k = xc[p];
-      const double x = xv[p];
-      for (int q = yo[k]; q < yo[k + 1]; ++q) emit(yc[q], yv[q] * x);
+namespace {
+// Rows of A P formed on demand, in the order and with the sums multiplySparse(A, P) uses
+// (entries of A's row in column order, each times P's row; the first value assigned, the
+// others added; the row sorted by column), kept until the arena is full.
+struct ProductRowCache {
+  const SparseMatrixR& A;
+  const SparseMatrixR& P;
+  std::size_t limit;
+  std::vector<int> stamp, start, length;  // per row of A: cached in arena generation `stamp`
+  std::vector<int> cols;
+  std::vector<double> vals;
+  std::vector<int> mark;  // per column of P: the last row formed that met it
+  std::vector<double> sum;
+  std::vector<int> found;
+  int generation = 0, formed = 0;
+
+  ProductRowCache(const SparseMatrixR& a, const SparseMatrixR& p, std::size_t cap)
+      : A(a), P(p), limit(std::max<std::size_t>(cap, 1)), stamp(std::size_t(a.rows()), -1),
+        start(std::size_t(a.rows())), length(std::size_t(a.rows())), mark(std::size_t(p.cols()), -1),
+        sum(std::size_t(p.cols())) {}
+
+  // Row i of A P: its columns and values.
+  std::pair<const int*, const double*> row(int i, int& len) {
+    if (stamp[std::size_t(i)] != generation) form(i);
+    len = length[std::size_t(i)];
+    const std::size_t b = std::size_t(start[std::size_t(i)]);
+    return {cols.data() + b, vals.data() + b};
+  }
+
+  void form(int i) {
+    const int* ao = A.outerIndexPtr();
+    const int* ac = A.innerIndexPtr();
+    const double* av = A.valuePtr();
+    const int* po = P.outerIndexPtr();
+    const int* pc = P.innerIndexPtr();
+    const double* pv = P.valuePtr();
+    const int tag = formed++;
+    found.clear();
+    for (int p = ao[i]; p < ao[i + 1]; ++p) {
+      const int k = ac[p];
+      const double x = av[p];
+      for (int q = po[k]; q < po[k + 1]; ++q) {
+        const int c = pc[q];
+        const double v = pv[q] * x;
+        if (mark[std::size_t(c)] != tag) {
+          mark[std::size_t(c)] = tag;
+          sum[std::size_t(c)] = v;
+          found.push_back(c);
+        } else {
+          sum[std::size_t(c)] += v;
+        }
+      }
+    }
+    std::sort(found.begin(), found.end());
+    if (!cols.empty() && cols.size() + found.size() > limit) {  // full: start a new generation
+      cols.clear();
+      vals.clear();
+      ++generation;
+    }
+    stamp[std::size_t(i)] = generation;
+    start[std::size_t(i)] = int(cols.size());
+    length[std::size_t(i)] = int(found.size());
+    for (int c : found) {
+      cols.push_back(c);
+      vals.push_back(sum[std::size_t(c)]);
+    }
+  }
+};
+}  // namespace
+
+void galerkinProduct(const SparseMatrixR& R, const SparseMatrixR& A, const SparseMatrixR& P, SparseMatrixR& out,
+                     std::size_t cacheEntries) {
+  const int* ro = R.outerIndexPtr();
+  const int* rc = R.innerIndexPtr();
+  const double* rv = R.valuePtr();
+  const int rows = int(R.rows());
+  // The work is that of A P's rows: parallel by the fine level's size.
+  const bool parallel = A.rows() > kParallelRows;
+  const int threads = parallel ? omp_get_max_threads() : 1;
+  std::vector<std::unique_ptr<ProductRowCache>> caches(std::size_t(std::max(threads, 1)));
+  const auto visit = [&](int I, const auto& emit) {
+    auto& cache = caches[std::size_t(omp_get_thread_num()) % caches.size()];
+    if (!cache) cache = std::make_unique<ProductRowCache>(A, P, cacheEntries);
+    for (int p = ro[I]; p < ro[I + 1]; ++p) {
+      const double x = rv[p];
+      int len = 0;
+      const auto [c, v] = cache->row(rc[p], len);
+      for (int e = 0; e < len; ++e) emit(c[e], v[e] * x);
     }
   };
-  buildRows(int(X.rows()), int(Y.cols()), out, visit, unchanged);
+  buildRows(rows, int(P.cols()), out, visit, unchanged, parallel);
 }
 
 void transposeSparse(const SparseMatrixR& X, SparseMatrixR& out) {
@@ -125,7 +204,7 @@ void smoothedProlongator(const SparseMatrixR& A, const std::vector<double>& invD
     const double scale = -omega * inv[i];
     return K == agg[std::size_t(i)] ? 1.0 + v * scale : v * scale;
   };
-  buildRows(int(A.rows()), numAggregates, P, visit, finish);
+  buildRows(int(A.rows()), numAggregates, P, visit, finish, A.rows() > kParallelRows);
 }
 
 }  // namespace shizuku

@@ -1,6 +1,8 @@
 // Row-parallel sparse products of the AMG setup (docs/method.md 4.2): the smoothed
 // prolongator P = (I - omega D^-1 A) P0 of an aggregation, the transpose R = P^T and
-// the products A P and R (A P) of the Galerkin coarse operator A_c = R A P.
+// the Galerkin coarse operator A_c = R (A P), the last without storing A P: each row of
+// A P is formed where a row of R needs it and kept in a bounded per-thread cache, so the
+// setup's peak holds A_c's rows and not the larger A P.
 // Each result is built in two passes over its rows (how many columns each row has, then
 // the columns and their values) straight into its compressed arrays: no temporaries
 // beyond a dense row of the result's width per thread, where Eigen's products build, sort and copy their
@@ -16,8 +18,11 @@ namespace shizuku {
 
 using SparseMatrixR = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 
-// out = X Y (rows sorted by column; structural zeros of cancellation kept, as Eigen's).
-void multiplySparse(const SparseMatrixR& X, const SparseMatrixR& Y, SparseMatrixR& out);
+// out = R (A P), equal bit for bit to Eigen's R * (A * P) (structural zeros of
+// cancellation kept, as Eigen's). The rows of A P live in a per-thread cache of at most
+// `cacheEntries` entries (emptied when full; a row needed again is recomputed).
+void galerkinProduct(const SparseMatrixR& R, const SparseMatrixR& A, const SparseMatrixR& P, SparseMatrixR& out,
+                     std::size_t cacheEntries = std::size_t(1) << 18);
 
 // out = X^T (rows sorted by column).
 void transposeSparse(const SparseMatrixR& X, SparseMatrixR& out);

@@ -181,11 +181,16 @@ MUTATIONS = [
              [r"^unit\.test_boundaries_domain$"],
              "fluid deep inside a curved or STL solid is never reported as a leak"),
     Mutation("amgProductSummedBackwards", "libsph/linearSolvers/SparseProducts.cpp",
-             "    for (int p = xo[i]; p < xo[i + 1]; ++p) {\n      const int k = xc[p];",
-             "    for (int p = xo[i + 1] - 1; p >= xo[i]; --p) {\n      const int k = xc[p];",
+             "    for (int p = ao[i]; p < ao[i + 1]; ++p) {\n      const int k = ac[p];",
+             "    for (int p = ao[i + 1] - 1; p >= ao[i]; --p) {\n      const int k = ac[p];",
              [r"^unit\.test_linearSolvers_sparseProducts$"],
              "the AMG's Galerkin products sum each row in another order than Eigen's: the coarse operators "
              "differ in their last bits and every validated trajectory moves"),
+    Mutation("amgProductCacheStale", "libsph/linearSolvers/SparseProducts.cpp",
+             "      vals.clear();\n      ++generation;", "      vals.clear();",
+             [r"^unit\.test_linearSolvers_sparseProducts$"],
+             "the Galerkin product's row cache, emptied when full, still serves the rows it held: "
+             "A P rows read from overwritten storage, a wrong coarse operator"),
     Mutation("amgProlongatorUnsmoothed", "libsph/linearSolvers/SparseProducts.cpp",
              "const double scale = -omega * inv[i];", "const double scale = -inv[i];",
              [r"^unit\.test_linearSolvers_sparseProducts$"],

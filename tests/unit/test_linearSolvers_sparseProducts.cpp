@@ -1,6 +1,8 @@
 // The AMG setup's row-parallel sparse products (libsph/linearSolvers/SparseProducts)
-// against Eigen's own products, which they replace: X Y, X^T and the smoothed
-// prolongator P0 - omega D^-1 A P0 must equal Eigen's results bit for bit (same
+// against Eigen's own products, which they replace: X^T, the smoothed
+// prolongator P0 - omega D^-1 A P0 and the Galerkin product R (A P) (formed without
+// storing A P, also with a cache small enough to be emptied many times) must equal
+// Eigen's results bit for bit (same
 // pattern, same values: the AMG hierarchy and so every trajectory are unchanged), on
 // one thread and on two, below and above the size at which rows are split between
 // threads; and the prolongator of a matrix with zero row sums keeps constants
@@ -102,16 +104,25 @@ const int kThreads[] = {1, 2};
 
 }  // namespace
 
-BOOST_AUTO_TEST_CASE(product_equals_eigens_bit_for_bit) {
-  for (int rows : {300, 20000})  // one thread's work, and rows split between threads
+BOOST_AUTO_TEST_CASE(galerkin_product_equals_eigens_bit_for_bit) {
+  // Coarse rows on one thread, and split between threads; ten fine rows per coarse one,
+  // so that many products meet in each entry of A P and of A_c (summation order matters).
+  for (int rows : {300, 10000})
     for (int threads : kThreads) {
       omp_set_num_threads(threads);
-      const SparseMatrixR X = randomMatrix(rows, rows / 2, 12, 1u + unsigned(rows));
-      const SparseMatrixR Y = randomMatrix(rows / 2, rows / 3, 8, 2u + unsigned(rows));
-      SparseMatrixR mine;
-      multiplySparse(X, Y, mine);
-      const SparseMatrixR eigen = X * Y;
-      BOOST_TEST_CONTEXT("rows " << rows << ", threads " << threads) requireIdentical(mine, eigen);
+      const int fine = 10 * rows;
+      const SparseMatrixR A = randomMatrix(fine, fine, 14, 3u + unsigned(rows));
+      const SparseMatrixR P = randomMatrix(fine, rows, 6, 4u + unsigned(rows));
+      const SparseMatrixR R = SparseMatrixR(P.transpose());
+      const SparseMatrixR AP = A * P;
+      const SparseMatrixR expected = R * AP;
+      for (std::size_t cache : {std::size_t(1) << 18, std::size_t(64), std::size_t(1)}) {
+        BOOST_TEST_CONTEXT("rows " << rows << ", threads " << threads << ", cache " << cache) {
+          SparseMatrixR mine;
+          galerkinProduct(R, A, P, mine, cache);
+          requireIdentical(mine, expected);
+        }
+      }
     }
 }
 
