@@ -19,8 +19,9 @@ void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u, bool ou
     for (Index k = nl.begin(w); k < nl.end(w); ++k) {
       const Index f = nl.j[k];
       if (!s.isFluid(f)) continue;
-      sum += s.weights.w[k] * u[f];
-      ws += s.weights.w[k];
+      const double wk = s.w(std::size_t(w), k);
+      sum += wk * u[f];
+      ws += wk;
     }
     u[w] = ws > 0 ? Vec<D>(sum / ws) : s.particles.velocity[w];
   }
@@ -40,7 +41,7 @@ void WallContacts<D>::update(const FlowState<D>& s) {
     bool alone = true;
     for (Index k = nl.begin(f); k < nl.end(f); ++k) {
       const Index j = nl.j[k];
-      if (s.particles.isWall(std::size_t(j))) sum += s.weights.w[k] * nl.rij(std::size_t(f), k);
+      if (s.particles.isWall(std::size_t(j))) sum += s.w(std::size_t(f), k) * nl.rij(std::size_t(f), k);
       else if (s.isFluid(std::size_t(j)) && j != f) alone = false;
     }
     const double len = sum.norm();
@@ -68,11 +69,12 @@ AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, const WallContacts<D>& c
     const Vec<D> forces = (s.uStar[f] - s.particles.velocity[f]) * invDt;
     const Vec<D> a = inlet ? Vec<D>((s.uStar[f] - Uw) * invDt)
                            : Vec<D>(contacts.lone[f] ? Vec<D>(n * n.dot(forces)) : forces);
-    row.weightSum += s.weights.w[k];
     const Vec<D> rwf = nl.rij(w, k);
-    sum += s.weights.w[k] * a.dot(rwf);
-    if (!inlet) velocitySum += s.weights.w[k] * n.dot(s.particles.velocity[f] - Uw) * n.dot(rwf);
-    previousPressure += s.weights.w[k] * s.particles.pressure[f];
+    const double wk = s.kernel.w(rwf.norm());
+    row.weightSum += wk;
+    sum += wk * a.dot(rwf);
+    if (!inlet) velocitySum += wk * n.dot(s.particles.velocity[f] - Uw) * n.dot(rwf);
+    previousPressure += wk * s.particles.pressure[f];
   }
   if (row.weightSum > 0) {
     const double forcesPart = s.rho0 * sum / row.weightSum;

@@ -101,7 +101,6 @@ void ParticleShifting<D>::apply(FlowState<D>& s, StageTimers& timers) {
       shepardFluidVelocity(s, s.uStar);
       Ops<D>::velocityGradient(s.neighbours, s.weights, s.V(), s.uStar, gradU_);
     }
-    s.refreshPairGeometry();
     s.computeDensity();
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) dr_[i].setZero();

@@ -17,7 +17,6 @@ template <int D>
 void XSPH<D>::addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<D>>& u,
                                    std::vector<Vec<D>>& du) {
   const auto& nl = s.neighbours;
-  const auto& w = s.weights.w;
   const double c = epsilon_ * s.V();
   const long n = long(s.size());
   long count = 0;
@@ -27,7 +26,7 @@ void XSPH<D>::addAdvectionVelocity(const FlowState<D>& s, const std::vector<Vec<
     Vec<D> sum = Vec<D>::Zero();
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
       const Index j = nl.j[k];
-      if (s.isFluid(j)) sum += w[k] * (u[j] - u[i]);
+      if (s.isFluid(j)) sum += s.w(std::size_t(i), k) * (u[j] - u[i]);
     }
     du[i] += c * sum;
     ++count;

@@ -83,14 +83,6 @@ void IsphStep<D>::analyse() {
   { StageTimers::Scope t(timers_, st_.neighbours); search_->build(P.position, s_.neighbours); }
   {
     StageTimers::Scope t(timers_, st_.density);
-    // Kernel values of every pair (the operator below refills the fluid rows with
-    // identical values): <rho>, the Shepard wall velocity and the Adami rows use them.
-    const auto& nl = s_.neighbours;
-    const long n = long(s_.size());
-    s_.weights.w.resize(nl.numPairs());
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i)
-      for (Index k = nl.begin(i); k < nl.end(i); ++k) s_.weights.w[k] = s_.kernel.w(nl.r(std::size_t(i), k));
     s_.computeDensity();
   }
   { StageTimers::Scope t(timers_, st_.freeSurface); scheme_.freeSurface->detect(s_); }
@@ -190,7 +182,6 @@ template <int D>
 void IsphStep<D>::correctPositions() {
   if (effects_.positionCorrections.empty()) return;
   StageTimers::Scope t(timers_, st_.positionCorrections);
-  s_.refreshPairGeometry();
   for (auto& e : effects_.positionCorrections) {
     e->correctPositions(s_);
     report_.adsCount = e->lastActionCount();

@@ -49,10 +49,10 @@ class FallbackOperator final : public DerivativeOperator<D> {
       if constexpr (Top == weights::orderFI)
         if (row == 1 && weights::fiRow(lim, h, V, nl, i, b, e, out)) {
           if (weights::gradientBounded(lim, kernelGradient, b, e, out)) return weights::orderFI;
-          weights::kernelRow(kernel, nl, i, b, e, out);  // fiRow wrote over the kernel values
+          weights::kernelRow(kernel, nl, i, b, e, out);  // fiRow wrote over the kernel pass's scratch
         }
       if constexpr (Top != weights::orderStandard)
-        if (row <= 2 && weights::firstOrderRow(lim, h, V, nl, i, b, e, out)) {
+        if (row <= 2 && weights::firstOrderRow(lim, kernel, V, nl, i, b, e, out)) {
           if (weights::gradientBounded(lim, kernelGradient, b, e, out)) return weights::orderFirst;
           weights::kernelRow(kernel, nl, i, b, e, out);
         }

@@ -26,7 +26,6 @@ std::string toString(DerivativeScheme s);
 // Per-pair and per-particle weights shared by every operator in a step.
 template <int D>
 struct PairWeights {
-  std::vector<double> w;           // per pair: W(|r_ij|)
   std::vector<Vec<D>> gradW;       // per pair: corrected gradient weight (tilde grad W_ij)
   std::vector<double> lapW;        // per pair: Laplacian weight (tilde lap W_ij)
   std::vector<std::uint8_t> order; // per particle: 2 = FI, 1 = first order, 0 = standard, 255 = none
@@ -62,8 +61,7 @@ class DerivativeOperator {
   virtual ~DerivativeOperator() = default;
   virtual DerivativeScheme scheme() const = 0;
   // Fill `out` for every particle i with computeFor[i] != 0 (other particles get zero
-  // gradient and Laplacian weights, order 255, and keep the kernel values w already
-  // stored). computeFor[i] == 2 marks a free-surface row: SPH2 starts its fallback chain
+  // gradient and Laplacian weights and order 255). computeFor[i] == 2 marks a free-surface row: SPH2 starts its fallback chain
   // there at first order; 3 marks a splash row (an isolated particle): standard weights,
   // because a correction matrix built from the one to three neighbours of a droplet
   // amplifies the noise of their pressures (docs/solver.md, the weights stage).

@@ -1,16 +1,7 @@
-// FlowState helpers: the kernel values of the moved pairs and the summation density (eq. 18).
+// FlowState helpers: the type masks and the summation density (eq. 18).
 #include "operators/FlowState.hpp"
 
 namespace shizuku {
-
-template <int D>
-void FlowState<D>::refreshPairGeometry() {
-  auto& nl = neighbours;
-  const long n = long(nl.numParticles());
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i)
-    for (Index k = nl.begin(i); k < nl.end(i); ++k) weights.w[k] = kernel.w(nl.r(std::size_t(i), k));
-}
 
 template <int D>
 void FlowState<D>::refreshTypeMasks() {
@@ -33,7 +24,7 @@ void FlowState<D>::computeDensity() {
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     double s = w0;
-    for (Index k = nl.begin(i); k < nl.end(i); ++k) s += weights.w[k];
+    for (Index k = nl.begin(i); k < nl.end(i); ++k) s += w(std::size_t(i), k);
     rho[i] = m * s;
   }
   exchange(rho);

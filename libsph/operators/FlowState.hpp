@@ -19,7 +19,7 @@ struct FlowState {
   Kernel<D> kernel;
   PeriodicBox<D> periodic;
   NeighbourList<D> neighbours;           // CSR, built once per step at r^n
-  PairWeights<D> weights;                // W, corrected gradient, Laplacian weights
+  PairWeights<D> weights;                // corrected gradient and Laplacian weights
   std::vector<std::uint8_t> isFluidMask; // 1 for fluid particles (weights are computed for them)
   // 1 for inlet and outlet particles, whose velocity neighbours see as it is (no wall
   // mirror); empty in a case without inlets and outlets.
@@ -64,9 +64,9 @@ struct FlowState {
   void refreshTypeMasks();
   SurfaceClass surfaceClass(std::size_t i) const { return particles.surfaceClass(i); }
 
-  // Recompute W_ij on the current pair list after positions moved (r_ij and |r_ij| are
-  // computed from the positions wherever they are used: NeighbourList::rij).
-  void refreshPairGeometry();
+  // W_ij of pair k of row i at the particles' current positions (like r_ij, computed
+  // where a pass needs it rather than stored: 8 bytes a pair).
+  double w(std::size_t i, Index k) const { return kernel.w(neighbours.r(i, std::size_t(k))); }
   // Summation density <rho>_i = m sum_j W_ij incl. self and walls (eq. 18), for all particles.
   void computeDensity();
 };

@@ -210,7 +210,7 @@ inline double invertWithRcond(const Mat<D>& m, Mat<D>& inv) {
   return rcond1<D>(a, b);
 }
 
-// Kernel pass of row [b, e): w into out.w, kappa = c h^2 into out.lapW and
+// Kernel pass of row [b, e): kappa = c h^2 into out.lapW and
 // beta = kappa h^2 / r^2 into out.gradW[p][0] (scratch, overwritten by the row
 // functions below, one of which must follow). Returns the row's largest kernel
 // gradient |dW/dr| (the reference of gradientBounded).
@@ -223,7 +223,6 @@ inline double kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, std::siz
     double w, dw;
     k.eval(r, w, dw);
     const double kappa = -dw * invR * h2;
-    out.w[p] = w;
     out.lapW[p] = kappa;
     out.gradW[p][0] = kappa * h2 * invR * invR;
     if (r > 0) largest = std::max(largest, std::abs(dw));
@@ -330,17 +329,19 @@ inline bool gradientBounded(const Limits<D>& lim, double kernelGradient, Index b
 // First-order row (after kernelRow): KGC gradient and renormalised Laplacian.
 // Returns false (weights untouched) if the 2x2/3x3 correction is singular.
 template <int D>
-inline bool firstOrderRow(const Limits<D>& lim, double h, double V, const NeighbourList<D>& nl, std::size_t i, Index b, Index e,
-                          PairWeights<D>& out) {
+inline bool firstOrderRow(const Limits<D>& lim, const Kernel<D>& k, double V, const NeighbourList<D>& nl, std::size_t i,
+                          Index b, Index e, PairWeights<D>& out) {
+  const double h = k.h();
   if (e - b < lim.minNeighboursFirstOrder) return false;
   const double invH = 1.0 / h;
   Mat<D> A = Mat<D>::Zero(), B = Mat<D>::Zero();
   Vec<D> o = Vec<D>::Zero();
   for (Index p = b; p < e; ++p) {
-    const Vec<D> s = -invH * nl.rij(i, p);  // r_ji / h
+    const Vec<D> rij = nl.rij(i, p), s = -invH * rij;  // r_ji / h
+    const double w = k.w(rij.norm());
     A.noalias() += out.lapW[p] * s * s.transpose();  // kappa s s^T = h gradW (x) s
-    B.noalias() += out.w[p] * s * s.transpose();
-    o += out.w[p] * s;
+    B.noalias() += w * s * s.transpose();
+    o += w * s;
   }
   A *= V;  // = V sum gradW (x) r_ji
   Mat<D> L;
@@ -356,35 +357,33 @@ inline bool firstOrderRow(const Limits<D>& lim, double h, double V, const Neighb
   ok = ok && Bo.allFinite();
   if (ok) {
     for (Index p = b; p < e; ++p) {
-      const Vec<D> s = -invH * nl.rij(i, p);
-      den += out.w[p] * s.squaredNorm() * (1.0 - s.dot(Bo));
-      plain += out.w[p] * s.squaredNorm();
+      const Vec<D> rij = nl.rij(i, p), s = -invH * rij;
+      const double w = k.w(rij.norm());
+      den += w * s.squaredNorm() * (1.0 - s.dot(Bo));
+      plain += w * s.squaredNorm();
     }
     ok = den > lim.minLaplacianRenormalisation * plain && std::isfinite(den);
   }
   const double lScale = ok ? 2.0 * D / (V * den * h * h) : 0.0;
   const double invH2 = invH * invH;
   for (Index p = b; p < e; ++p) {
-    const Vec<D> s = -invH * nl.rij(i, p);
+    const Vec<D> rij = nl.rij(i, p), s = -invH * rij;
     const double kappa = out.lapW[p];
     out.gradW[p] = (kappa * invH) * (L * s);  // L gradW, gradW = c r_ji = kappa s / h
-    out.lapW[p] = ok ? lScale * out.w[p] * (1.0 - s.dot(Bo)) : 2.0 * kappa * invH2;  // else Morris
+    out.lapW[p] = ok ? lScale * k.w(rij.norm()) * (1.0 - s.dot(Bo)) : 2.0 * kappa * invH2;  // else Morris
   }
   return true;
 }
 
 // Resize the outputs and run `row(i, b, e)` -> order for every particle with
 // computeFor[i] != 0 (all particles if computeFor is empty); other rows get
-// zero gradient and Laplacian weights and order 255, and keep whatever kernel
-// values w the caller stored for them (the solver fills w for every pair first:
-// wall rows need them). OpenMP over particles.
+// zero gradient and Laplacian weights and order 255. OpenMP over particles.
 template <int D, class Row>
 void computeRows(const NeighbourList<D>& nl, const std::vector<std::uint8_t>& computeFor,
                  PairWeights<D>& out, Row&& row) {
   const std::size_t n = nl.numParticles(), np = nl.numPairs();
   if (!computeFor.empty() && computeFor.size() != n)
     throw std::invalid_argument("computeWeights: computeFor has the wrong size");
-  out.w.resize(np);
   out.gradW.resize(np);
   out.lapW.resize(np);
   out.order.resize(n);

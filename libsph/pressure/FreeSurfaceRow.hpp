@@ -44,7 +44,8 @@ struct FreeSurfaceRow {
     const Vec<D> rij = nl.rij(i, k);
     d = -rij.dot(inward);  // r_ij = r_i - r_j
     if (!(d > 0) || !s.isFluid(j) || s.surfaceClass(j) == SurfaceClass::splash) return 0;
-    return s.weights.w[k] * d / rij.norm();
+    const double r = rij.norm();
+    return s.kernel.w(r) * d / r;
   }
 
   // sum_j a_ij d_ij: positive when some usable neighbour lies deeper than i.

@@ -159,7 +159,7 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
         if (!unknown_[j] || !s.isFluid(j)) continue;
         if (diagPos < 0 && j > i) putDiag();
         col[pos] = int(j);
-        val[pos++] = -s.weights.w[k] / row.weightSum;
+        val[pos++] = -s.w(std::size_t(i), k) / row.weightSum;
       }
       diag = 1.0;
       rhs = row.rhs;

@@ -22,16 +22,18 @@ template <int D>
 bool fitOne(const FlowState<D>& s, std::size_t i, const SurfaceFitSettings& set, Vec<D>& normal,
             double& distance) {
   const auto& nl = s.neighbours;
-  const auto& w = s.weights.w;
   // Pass 1: weighted centroid of Q relative to r_i (r_j - r_i = -r_ij).
   double sumW = 0;
   int count = 0;
   Vec<D> c = Vec<D>::Zero();
   for (Index k = nl.begin(i); k < nl.end(i); ++k) {
     const Index j = nl.j[k];
-    if (!s.isFluid(j) || !isFreeSurfaceClass(s.surfaceClass(j)) || !(w[k] > 0)) continue;
-    sumW += w[k];
-    c -= w[k] * nl.rij(i, k);
+    if (!s.isFluid(j) || !isFreeSurfaceClass(s.surfaceClass(j))) continue;
+    const Vec<D> rij = nl.rij(i, k);
+    const double w = s.kernel.w(rij.norm());
+    if (!(w > 0)) continue;
+    sumW += w;
+    c -= w * rij;
     ++count;
   }
   if (count < D) return false;
@@ -40,9 +42,12 @@ bool fitOne(const FlowState<D>& s, std::size_t i, const SurfaceFitSettings& set,
   Mat<D> cov = Mat<D>::Zero();
   for (Index k = nl.begin(i); k < nl.end(i); ++k) {
     const Index j = nl.j[k];
-    if (!s.isFluid(j) || !isFreeSurfaceClass(s.surfaceClass(j)) || !(w[k] > 0)) continue;
-    const Vec<D> y = -nl.rij(i, k) - c;
-    cov.noalias() += w[k] * y * y.transpose();
+    if (!s.isFluid(j) || !isFreeSurfaceClass(s.surfaceClass(j))) continue;
+    const Vec<D> rij = nl.rij(i, k);
+    const double w = s.kernel.w(rij.norm());
+    if (!(w > 0)) continue;
+    const Vec<D> y = -rij - c;
+    cov.noalias() += w * y * y.transpose();
   }
   Eigen::SelfAdjointEigenSolver<Mat<D>> es(cov);
   if (es.info() != Eigen::Success) return false;

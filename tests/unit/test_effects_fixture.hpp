@@ -45,7 +45,7 @@ struct Fixture {
     return p.position.size() - 1;
   }
 
-  // Neighbour list, SPH(2) weights (fluid particles), W for every pair, density.
+  // Neighbour list, SPH(2) weights (fluid particles), density.
   void update() {
     const std::size_t n = s.size();
     s.isFluidMask.resize(n);
@@ -54,7 +54,6 @@ struct Fixture {
     search.build(s.particles.position, s.neighbours);
     auto op = DerivativeOperator<D>::create(DerivativeScheme::SPH2, thresholds);
     op->computeWeights(s.kernel, s.V(), s.neighbours, s.isFluidMask, s.weights);
-    s.refreshPairGeometry();
     s.computeDensity();
   }
 
@@ -96,9 +95,9 @@ struct Fixture {
     return std::sqrt(std::max(0.0, sum2 / n - mean * mean));
   }
 
-  // Positions moved, same pairs: pair geometry, W and density (as the solver does).
+  // Positions moved, same pairs: the density (as the solver does; W and r_ij follow the
+  // positions by themselves).
   void refresh() {
-    s.refreshPairGeometry();
     s.computeDensity();
   }
 };

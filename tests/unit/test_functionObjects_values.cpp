@@ -55,9 +55,6 @@ FlowState<D> lattice(int n, double d0, const Vec<D>& c, const std::vector<Vec<D>
   p.mass = s.rho0 / s.kernel.latticeSum(d0);
   NeighbourSearch<D> search(s.kernel.support());
   search.build(p.position, s.neighbours);
-  s.weights.w.resize(s.neighbours.numPairs());
-  for (std::size_t i = 0; i < s.neighbours.numParticles(); ++i)
-    for (Index k = s.neighbours.begin(i); k < s.neighbours.end(i); ++k) s.weights.w[k] = s.kernel.w(s.neighbours.r(i, k));
   s.isFluidMask.resize(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) s.isFluidMask[i] = p.isFluid(i);
   s.computeDensity();
