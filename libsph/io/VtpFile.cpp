@@ -30,30 +30,35 @@ namespace shizuku {
 
 namespace {
 
-// A one-component VTK array of class A (whose value type is T) holding a copy of v.
+// The arrays of a write borrow the particle fields' storage where the layout is VTK's
+// (one component; three-component vectors in 3D): the writer only reads them while the
+// vtkPolyData lives, inside writeVtp, and a write then holds no copy of those fields.
 // (The first n values of each field are written: a rank's own particles, not its ghosts.)
 template <class A, class T>
-vtkSmartPointer<vtkDataArray> makeScalarArray(const char* name, const std::vector<T>& v, std::size_t n) {
+vtkSmartPointer<vtkDataArray> borrowArray(const char* name, const T* v, std::size_t n, int components) {
   auto a = vtkSmartPointer<A>::New();
   a->SetName(name);
-  a->SetNumberOfComponents(1);
-  a->SetNumberOfTuples(vtkIdType(n));
-  if (n) std::memcpy(a->GetPointer(0), v.data(), n * sizeof(T));
+  a->SetNumberOfComponents(components);
+  // save = 1: VTK neither frees nor writes to the storage.
+  a->SetArray(const_cast<T*>(v), vtkIdType(n) * components, 1);
   return a;
 }
 
 vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<double>& v, std::size_t n) {
-  return makeScalarArray<vtkDoubleArray>(name, v, n);
+  return borrowArray<vtkDoubleArray>(name, v.data(), n, 1);
 }
 vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<std::uint8_t>& v, std::size_t n) {
-  return makeScalarArray<vtkUnsignedCharArray>(name, v, n);
+  return borrowArray<vtkUnsignedCharArray>(name, v.data(), n, 1);
 }
 vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<std::int64_t>& v, std::size_t n) {
-  return makeScalarArray<vtkTypeInt64Array>(name, v, n);
+  return borrowArray<vtkTypeInt64Array>(name, reinterpret_cast<const vtkTypeInt64*>(v.data()), n, 1);
 }
 
+// Vectors as three components (2D: z = 0, a copy; 3D: the storage itself).
 template <int D>
 vtkSmartPointer<vtkDataArray> makeArray(const char* name, const std::vector<Vec<D>>& v, std::size_t count) {
+  static_assert(sizeof(Vec<3>) == 3 * sizeof(double), "Vec<3> is three packed doubles");
+  if constexpr (D == 3) return borrowArray<vtkDoubleArray>(name, v.empty() ? nullptr : v[0].data(), count, 3);
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
   a->SetName(name);
   a->SetNumberOfComponents(3);

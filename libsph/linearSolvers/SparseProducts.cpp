@@ -70,14 +70,18 @@ const auto unchanged = [](int, int, double v) { return v; };
 }  // namespace
 
 namespace {
-// Rows of A P formed on demand, in the order and with the sums multiplySparse(A, P) uses
+// Rows of A P formed on demand, in the order and with the sums the product A P sums them
 // (entries of A's row in column order, each times P's row; the first value assigned, the
-// others added; the row sorted by column), kept until the arena is full.
+// others added; the row sorted by column), kept until the arena is full. The rows are
+// found through a direct-mapped table indexed by the row number's low bits (a thread's
+// rows of R reach a narrow band of rows of A P, so its rows rarely share a slot, and a
+// row displaced from its slot is formed again when needed).
 struct ProductRowCache {
+  static constexpr int kSlots = 1 << 15;
   const SparseMatrixR& A;
   const SparseMatrixR& P;
   std::size_t limit;
-  std::vector<int> stamp, start, length;  // per row of A: cached in arena generation `stamp`
+  std::vector<int> key, stamp, start, length;  // per slot: row key, arena generation `stamp`
   std::vector<int> cols;
   std::vector<double> vals;
   std::vector<int> mark;  // per column of P: the last row formed that met it
@@ -86,19 +90,19 @@ struct ProductRowCache {
   int generation = 0, formed = 0;
 
   ProductRowCache(const SparseMatrixR& a, const SparseMatrixR& p, std::size_t cap)
-      : A(a), P(p), limit(std::max<std::size_t>(cap, 1)), stamp(std::size_t(a.rows()), -1),
-        start(std::size_t(a.rows())), length(std::size_t(a.rows())), mark(std::size_t(p.cols()), -1),
-        sum(std::size_t(p.cols())) {}
+      : A(a), P(p), limit(std::max<std::size_t>(cap, 1)), key(kSlots, -1), stamp(kSlots, -1), start(kSlots),
+        length(kSlots), mark(std::size_t(p.cols()), -1), sum(std::size_t(p.cols())) {}
 
   // Row i of A P: its columns and values.
   std::pair<const int*, const double*> row(int i, int& len) {
-    if (stamp[std::size_t(i)] != generation) form(i);
-    len = length[std::size_t(i)];
-    const std::size_t b = std::size_t(start[std::size_t(i)]);
+    const std::size_t slot = std::size_t(i) & (kSlots - 1);
+    if (key[slot] != i || stamp[slot] != generation) form(i, slot);
+    len = length[slot];
+    const std::size_t b = std::size_t(start[slot]);
     return {cols.data() + b, vals.data() + b};
   }
 
-  void form(int i) {
+  void form(int i, std::size_t slot) {
     const int* ao = A.outerIndexPtr();
     const int* ac = A.innerIndexPtr();
     const double* av = A.valuePtr();
@@ -128,9 +132,10 @@ struct ProductRowCache {
       vals.clear();
       ++generation;
     }
-    stamp[std::size_t(i)] = generation;
-    start[std::size_t(i)] = int(cols.size());
-    length[std::size_t(i)] = int(found.size());
+    key[slot] = i;
+    stamp[slot] = generation;
+    start[slot] = int(cols.size());
+    length[slot] = int(found.size());
     for (int c : found) {
       cols.push_back(c);
       vals.push_back(sum[std::size_t(c)]);

@@ -191,6 +191,11 @@ MUTATIONS = [
              [r"^unit\.test_linearSolvers_sparseProducts$"],
              "the Galerkin product's row cache, emptied when full, still serves the rows it held: "
              "A P rows read from overwritten storage, a wrong coarse operator"),
+    Mutation("amgProductCacheSlotUnchecked", "libsph/linearSolvers/SparseProducts.cpp",
+             "if (key[slot] != i || stamp[slot] != generation)", "if (stamp[slot] != generation)",
+             [r"^unit\.test_linearSolvers_sparseProducts$"],
+             "the Galerkin product's row cache serves whatever row holds a slot: two rows of A P "
+             "whose numbers share their low bits are taken for each other"),
     Mutation("amgProlongatorUnsmoothed", "libsph/linearSolvers/SparseProducts.cpp",
              "const double scale = -omega * inv[i];", "const double scale = -inv[i];",
              [r"^unit\.test_linearSolvers_sparseProducts$"],
