@@ -189,21 +189,21 @@ def write(csvPath, mdPath, quick):
             dn = float(s320["total"]) - float(s80["total"])
             marg = f"; marginal {f(dm / dn)} B (80k to 320k)"
         add(f"| <= 2 KB memory per particle | {f(bpp)} B per particle (peak RSS / all particles, {s320['case']}){marg} "
-            f"| {'yes' if bpp <= 2048 else 'no'} | Measured 2026-12-04, same machine, peak RSS per particle of the K&O "
-            "runs (30 steps, 2 threads), bit-for-bit the same results at every stage: before 3.90 KB (80k) and "
-            "3.51 KB (320k); with the AMG setup's products built in place (SparseProducts: no Eigen product "
-            "temporaries) 3.36 and 2.99 KB; with r_ij and |r_ij| computed from the positions where a pass uses "
-            "them (the list stores only j: -24 B a pair in 2D, -32 B in 3D) 3.03 and 2.61 KB; that costs 3.5 % of a 2D step "
-            "(K&O 20k, three alternating runs each: 1.62-1.68 against 1.68-1.73 us; the kernel loops of the density, "
-            "free surface and shifting stages gather x_j and take a square root instead of streaming r) and saves a "
-            "little in 3D (100k: 16.5 against 15.8 us). heaptrack at 86k "
-            "before the second change (heap peak 236.5 MB = 2.75 KB per particle): 1.68M pairs, their arrays "
-            "1.1 KB per particle (r_ij 16 B, corrected gradient 16 B, W 8 B, Laplacian 8 B, index 4 B, search "
-            "scratch 4 B), the per-particle fields about 0.3 KB, the PPE matrix, AMG hierarchy and Krylov "
-            "vectors the rest. What would move it further: the search scratch freed after the build (-4 B a "
-            "pair), W recomputed from |r_ij| (-8 B a pair), the AMG's restriction applied as P^T instead of "
-            "stored; single-precision AMG levels were tried (no speed gain at 20k: the levels fit in cache) and "
-            "not kept |")
+            f"| {'yes' if bpp <= 2048 else 'no'} | Measured 2026-12-04 on one machine, K&O runs (30 steps, 2 "
+            "threads), outputs byte for byte the same at every stage; peak RSS per particle at 80k / 320k: 3.90 / "
+            "3.51 KB before that day's changes; 3.36 / 2.99 with the AMG setup's products built in place; 3.03 / "
+            "2.61 with pairs storing only j (r_ij and |r_ij| from the positions; the same build measured again "
+            "before the next change: 3.14 / 2.58); 2.85 / 2.37 with the Galerkin "
+            "operator formed without storing A P and the search's per-thread buffers grown by a quarter; 2.73 / "
+            "2.22 with W_ij computed from |r_ij| where a pass uses it (its fill and refresh passes gone: the step "
+            "is not slower); 2.71 / 2.18 with the product's row cache in a direct-mapped table and the VTP writer "
+            "lending VTK the fields. Of that, 57.5 MB for any case is the executable and its shared libraries "
+            "(VTK, Trilinos, PETSc, hypre): 0.17 KB a particle at 320k. The heap holds per pair (about 20) the "
+            "SPH2 gradient (16 B) and Laplacian (8 B) weights, the index (4 B) and the search's per-thread copy "
+            "(4 B and a quarter); per particle the PPE matrix (12 B an entry), the AMG hierarchy (P, R = P^T, "
+            "coarse operators, three vectors), the Krylov vectors (64 B) and the fields (about 0.3 KB). Next: "
+            "the restriction applied as P^T instead of a stored R, the search's copy as 16-bit offsets, "
+            "BiCGSTAB's s kept in r |")
     # 3D targets (issue 19): per particle of every kind, 2 threads.
     t100 = find(rows, "threeD", "3D-100k", 2)
     if t100:
@@ -276,10 +276,11 @@ def write(csvPath, mdPath, quick):
         add("block-Jacobi coupling across the two row blocks adds iterations, 8 -> 9.6, and the hierarchy's setup")
         add("runs on one thread); its share grows with N (the iterations with it), which is most of the 2x growth")
         add("from 100k to 800k. The neighbour search and the SPH2 weights (9x9 moment matrices) are the next")
-        add("18 % and 14 % on one thread. Memory: about 60 pairs per fluid particle, each with its index, r_ij,")
-        add("its length, W, the SPH2 gradient and Laplacian weights (about 76 B), plus the PPE rows. Estimated,")
-        add("not measured: recomputing r_ij and its length from the positions saves 32 B a pair (about 1 KB a")
-        add("particle here), and keeping the symmetric arrays once per pair would halve them.")
+        add("18 % and 14 % on one thread. Memory: about 60 pairs per fluid particle, each with its index and")
+        add("the SPH2 gradient and Laplacian weights (36 B; r_ij, its length and W are computed from the")
+        add("positions where used since 2026-12-04: peak RSS per particle at 100k 4.29 KB before, 3.75 KB after,")
+        add("bit for bit the same results), plus the PPE rows. Keeping the symmetric arrays once per pair would")
+        add("halve the pairs' share.")
         add("")
 
     # ---------------------------------------------------------- throughput

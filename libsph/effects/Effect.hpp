@@ -82,6 +82,8 @@ class EffectAt : public Effect<D> {
 template <int D>
 struct ForceEffect : EffectAt<D, EffectStage::force> {
   using EffectAt<D, EffectStage::force>::EffectAt;
+  // Adds the force per unit mass to acc (the predictor sums it in u*'s storage: a force
+  // reads the velocity and positions, never FlowState::uStar).
   virtual void addAcceleration(const FlowState<D>&, std::vector<Vec<D>>& acc) = 0;
 };
 template <int D>

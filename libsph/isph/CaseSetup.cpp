@@ -155,7 +155,6 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
   if (Communicator::world().sum(long(P.countFluid())) == 0)  // every rank's share
     files.particlesDict.error("regions", "the case has no fluid particles");
   s.uStar.resize(n);
-  s.acceleration.resize(n);
   return startName;
 }
 

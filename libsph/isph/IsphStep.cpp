@@ -105,7 +105,9 @@ void IsphStep<D>::analyse() {
 template <int D>
 void IsphStep<D>::predict() {
   StageTimers::Scope t(timers_, st_.predictor);
-  auto& acc = s_.acceleration;
+  // The forces' acceleration is summed in u*'s storage, then u* = u + dt a in place (a
+  // force reads the velocity, never u*).
+  auto& acc = s_.uStar;
   const long n = long(s_.size());
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) acc[i].setZero();
@@ -236,7 +238,6 @@ void IsphStep<D>::particleCountChanged() {
   const std::size_t n = s_.size();
   s_.refreshTypeMasks();
   s_.uStar.resize(n);
-  s_.acceleration.resize(n);
   if (needs_.surfaceFit) {
     s_.fitDistance.resize(n, NAN);
     s_.fitNormal.resize(n, Vec<D>::Zero());

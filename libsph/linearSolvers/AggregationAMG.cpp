@@ -56,9 +56,9 @@ constexpr long kParallelEntries = 65536;
 constexpr int kCoarsest = 400;    // dense LU at or below this size
 constexpr int kMaxLevels = 12;
 
-std::vector<double> diagonal(const SparseMatrixR& A) {
+void diagonal(const SparseMatrixR& A, std::vector<double>& d) {
   const int n = int(A.rows());
-  std::vector<double> d(n, 0.0);
+  d.assign(std::size_t(n), 0.0);
   const int* outer = A.outerIndexPtr();
   const int* col = A.innerIndexPtr();
   const double* val = A.valuePtr();
@@ -66,7 +66,6 @@ std::vector<double> diagonal(const SparseMatrixR& A) {
   for (int i = 0; i < n; ++i)
     for (int p = outer[i]; p < outer[i + 1]; ++p)
       if (col[p] == i) d[i] = val[p];
-  return d;
 }
 
 // Aggregates of the strong-coupling graph; -1 for rows left out (no strong coupling).
@@ -201,28 +200,32 @@ bool AggregationAMG::setup(const SparseMatrixR& A) {
   return ok;
 }
 
+// The levels are rebuilt in place: each keeps the storage of its matrices and vectors
+// from the last setup (reallocated only where a level grew), so a setup does not free
+// and reallocate the hierarchy and the heap does not fragment from one setup to the next.
 void AggregationAMG::build(const SparseMatrixR& A) {
-  levels_.clear();
-  levels_.reserve(kMaxLevels + 1);
-  levels_.emplace_back();
+  levels_.reserve(kMaxLevels + 1);  // references to levels stay valid while they are added
+  if (levels_.empty()) levels_.emplace_back();
   int longest = 0;
   for (int i = 0; i < int(A.rows()); ++i) longest = std::max(longest, A.outerIndexPtr()[i + 1] - A.outerIndexPtr()[i]);
   wide_ = longest > kWideRow;
   const SparseMatrixR* cur = &A;
   for (int l = 0;; ++l) {
-    Level& L = levels_[l];
+    Level& L = levels_[std::size_t(l)];
     const int n = int(cur->rows());
-    const std::vector<double> d = diagonal(*cur);
+    diagonal(*cur, diag_);
     L.invDiag.resize(n);
-    for (int i = 0; i < n; ++i) L.invDiag[i] = d[i] != 0 ? 1.0 / d[i] : 0.0;
+    for (int i = 0; i < n; ++i) L.invDiag[i] = diag_[i] != 0 ? 1.0 / diag_[i] : 0.0;
     // Level 0's right-hand side and solution are the caller's vectors (apply).
     for (auto* v : {&L.x, &L.b}) v->assign(l == 0 ? 0 : n, 0.0);
     for (auto* v : {&L.r, &L.old}) v->assign(n, 0.0);
-    std::vector<int> agg;
-    const int nc = (n <= kCoarsest || l + 1 >= kMaxLevels) ? 0 : aggregate(*cur, d, wide_, agg);
+    const int nc = (n <= kCoarsest || l + 1 >= kMaxLevels) ? 0 : aggregate(*cur, diag_, wide_, agg_);
     if (nc == 0 || nc > 0.9 * n) {
       // Coarsest level, solved exactly (rows left out of aggregation are identity-like
       // and solved here too): dense LU when small, sparse LU when aggregation stalled.
+      L.P = SparseMatrixR();
+      L.R = SparseMatrixR();
+      levels_.resize(std::size_t(l) + 1);
       coarsestRows_ = n;
       coarsestDense_ = n <= kCoarsest;
       if (coarsestDense_) {
@@ -235,18 +238,15 @@ void AggregationAMG::build(const SparseMatrixR& A) {
       }
       return;
     }
-    SparseMatrixR P, R, Ac;
-    smoothedProlongator(*cur, L.invDiag, agg, nc, kOmega, P);
-    if (wide_) truncate(P);
-    P.prune(0.0);
-    transposeSparse(P, R);
-    galerkinProduct(R, *cur, P, Ac);
+    smoothedProlongator(*cur, L.invDiag, agg_, nc, kOmega, L.P);
+    if (wide_) truncate(L.P);
+    L.P.prune(0.0);
+    transposeSparse(L.P, L.R);
+    if (levels_.size() < std::size_t(l) + 2) levels_.emplace_back();
+    SparseMatrixR& Ac = levels_[std::size_t(l) + 1].A;
+    galerkinProduct(L.R, *cur, L.P, Ac);
     Ac.prune(0.0);
-    L.P = std::move(P);
-    L.R = std::move(R);
-    levels_.emplace_back();
-    levels_.back().A = std::move(Ac);
-    cur = &levels_.back().A;
+    cur = &Ac;
   }
 }
 

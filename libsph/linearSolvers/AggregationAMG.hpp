@@ -70,6 +70,8 @@ class AggregationAMG final : public Preconditioner {
   long setups_ = 0;
   const SparseMatrixR* fine_ = nullptr;  // this step's matrix (alive during the solve)
   std::vector<Level> levels_;
+  std::vector<double> diag_;  // setup scratch: the diagonal of the level being built
+  std::vector<int> agg_;      // setup scratch: its aggregates
   int coarsestRows_ = 0;
   bool coarsestDense_ = true;
   bool wide_ = false;  // the finest level has a row of more than 40 entries (3D)

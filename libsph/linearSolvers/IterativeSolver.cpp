@@ -3,7 +3,9 @@
 // meets the tolerance (or the ~1e-10 round-off floor of these matrices when a
 // tighter one was asked for). When the recursive residual converged but the true
 // one did not, it restarts from the current x (at most twice); when it still
-// fails, one direct SparseLU solve rescues the step and says so.
+// fails, one direct SparseLU solve rescues the step and says so. A solve that still
+// fails leaves its last iterate in x (the caller stops the run and restores its last
+// good state).
 // Keys: tolerance, maxIterations, preconditioner, blocks, dropTolerance, fillFactor.
 #include "core/Log.hpp"
 #include "linearSolvers/Krylov.hpp"
@@ -51,7 +53,6 @@ class BiCGSTABSolver final : public LinearSolver {
   }
   LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
     LinearSolveResult r;
-    guess_ = x;  // capacity kept between steps
     if (!pc_->setup(A)) {
       r.message = "preconditioner setup failed (missing diagonal?)";
     } else {
@@ -89,13 +90,11 @@ class BiCGSTABSolver final : public LinearSolver {
       r.message = cat(failed, "; solved by the direct fallback (SparseLU), residual ", r.residual);
       r.usedFallback = true;
     }
-    if (!r.ok) x = guess_;
   }
 
   IterativeSettings set_;
   std::unique_ptr<Preconditioner> pc_;
   KrylovWorkspace work_;
-  Eigen::VectorXd guess_;
   Eigen::SparseMatrix<double, Eigen::ColMajor, int> colMajor_;
   Eigen::SparseLU<Eigen::SparseMatrix<double, Eigen::ColMajor, int>, Eigen::COLAMDOrdering<int>> lu_;
 };

@@ -3,7 +3,8 @@
 //   s = r - alpha v;  (stop with x += alpha y if ||s|| is small)
 //   z = M^-1 s;  t = A z;  omega = (t, s) / (t, t)
 //   x += alpha y + omega z;  r = s - omega t;  rho' = (r0, r)
-// A vanishing rho (r orthogonal to the shadow residual) restarts with r0 = r.
+// A vanishing rho (r orthogonal to the shadow residual) restarts with r0 = r. s is kept in
+// r's storage (seven vectors of n).
 #include "linearSolvers/Krylov.hpp"
 #include <cmath>
 #include <vector>
@@ -11,7 +12,7 @@
 namespace shizuku {
 
 void KrylovWorkspace::resize(int n) {
-  for (auto* v : {&r, &r0, &p, &v, &s, &t, &y, &z}) v->resize(n);
+  for (auto* v : {&r, &r0, &p, &v, &t, &y, &z}) v->resize(n);
 }
 
 namespace {
@@ -77,7 +78,7 @@ KrylovResult bicgstab(const SparseMatrixR& A, const double* b, double* x, const 
   double* r0 = w.r0.data();
   double* p = w.p.data();
   double* v = w.v.data();
-  double* s = w.s.data();
+  double* s = r;  // s = r - alpha v overwrites r, which is not read again before r = s - omega t
   double* t = w.t.data();
   double* y = w.y.data();
   double* z = w.z.data();

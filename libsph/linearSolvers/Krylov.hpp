@@ -11,7 +11,7 @@
 namespace shizuku {
 
 struct KrylovWorkspace {
-  std::vector<double> r, r0, p, v, s, t, y, z;
+  std::vector<double> r, r0, p, v, t, y, z;  // s lives in r
   void resize(int n);
 };
 

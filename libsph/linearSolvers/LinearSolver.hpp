@@ -43,7 +43,8 @@ class LinearSolver {
   virtual ~LinearSolver() = default;
   virtual std::string name() const = 0;
   virtual std::string describe() const = 0;
-  // Solve A x = b; x holds the initial guess on entry (iterative solvers).
+  // Solve A x = b; x holds the initial guess on entry (iterative solvers). When the result
+  // is not ok, x is unspecified (the last iterate of an iterative solver).
   virtual LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
   // A solver across ranks: A holds this rank's rows (rows numbered rank by rank) with
   // global column numbers, b and x this rank's entries (PETSc). The others need the

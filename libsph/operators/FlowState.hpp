@@ -40,7 +40,6 @@ struct FlowState {
   std::vector<double> divR;              // -sum V r_ij . gradW_ij (free-surface indicator, docs/method.md 5.1)
   std::vector<Vec<D>> gradC;             // kernel-sum gradient, inward (normals, docs/method.md 5.3)
   std::vector<Vec<D>> uStar;             // predicted velocity u* (fluid), Shepard-interpolated (walls)
-  std::vector<Vec<D>> acceleration;      // body and viscous forces per unit mass of the predictor
 
   // surface fit (docs/method.md 8.2), allocated only when an effect needs it. particles.normal
   // keeps the detector's normal (OPS projects with it); the fit's normal is apart.

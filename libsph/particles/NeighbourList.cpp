@@ -12,9 +12,12 @@
 // distance of the far particles;
 // (2) counting sort of particles by cell (wrapped positions copied in cell
 // order for locality); (3) parallel scan over cells: each thread appends the
-// (cell-order) indices of the neighbours found to its own buffer and records
-// the row length; (4) prefix sum -> CSR offsets; (5) parallel copy pass per
-// particle writing j, r_ij, |r_ij|, rows sorted by j. Every buffer lives in
+// neighbours found to its own buffer and records the row length: as 16-bit
+// offsets into the cell's list of candidates (the particles of its 3^D cells)
+// when no cell holds more than 65535 / 3^D particles, which halves the buffers
+// that stay allocated between builds, else as 32-bit cell-order positions;
+// (4) prefix sum -> CSR offsets; (5) parallel copy pass per particle writing
+// j, rows sorted by j. Every buffer lives in
 // Impl and the output vectors only grow, so a rebuild allocates nothing once
 // the capacity has been reached. Rows are identical for any thread count.
 // Reads no dictionary keys (radius and box come from the caller).
@@ -23,6 +26,7 @@
 #include <cmath>
 #include <limits>
 #include <omp.h>
+#include <type_traits>
 
 namespace shizuku {
 
@@ -64,11 +68,13 @@ struct NeighbourSearch<D>::Impl {
   std::vector<Index> sorted;     // particle indices in cell order (stable)
   std::vector<Vec<D>> xs;        // wrapped positions in cell order
   std::vector<Index> cursor;     // per-cell fill cursor of the counting sort
-  std::vector<Index> rank;       // position of particle i in cell order
   std::vector<double> coordinate;// scratch for the quantiles of the bulk box
-  // scan results: per-thread lists of neighbour positions (cell order), and
-  // where the row of particle i starts in which thread's list
+  // scan results: per-thread lists of neighbours (cell-order positions, or offsets
+  // into the cell's candidates), and where the row of particle i starts in which
+  // thread's list
   std::vector<std::vector<Index>> found;
+  std::vector<std::vector<std::uint16_t>> foundNarrow;
+  bool narrow = false;  // the last build used foundNarrow
   std::vector<Index> rowStart;
   std::vector<std::uint8_t> rowThread;
 
@@ -79,6 +85,7 @@ struct NeighbourSearch<D>::Impl {
   void sortByCell(const std::vector<Vec<D>>& x, const PeriodicBox<D>& box);
   // After the scan (row lengths summed into out.offset): the rows, sorted by j.
   void copyRows(NeighbourList<D>& out);
+  void copyNarrowRows(NeighbourList<D>& out, const PeriodicBox<D>& box);
   // The particles of the distinct neighbour cells of cell c (including c), as
   // ranges [b, e) of cell-order positions; consecutive cells are merged.
   int neighbourRanges(std::int64_t c, const PeriodicBox<D>& box, Index* ranges) const;
@@ -194,11 +201,7 @@ void NeighbourSearch<D>::Impl::sortByCell(const std::vector<Vec<D>>& x, const Pe
   if (cursor.size() < std::size_t(numCells)) cursor.resize(numCells);
   Index* fill = cursor.data();
   std::copy(cellStart.begin(), cellStart.end() - 1, fill);
-  rank.resize(n);
-  for (Index i = 0; i < n; ++i) {
-    rank[i] = fill[cellOf[i]]++;
-    sorted[rank[i]] = i;
-  }
+  for (Index i = 0; i < n; ++i) sorted[fill[cellOf[i]]++] = i;
 #pragma omp parallel for schedule(static)
   for (Index k = 0; k < n; ++k) {
     Vec<D> p = x[sorted[k]];
@@ -296,6 +299,46 @@ void NeighbourSearch<D>::Impl::copyRows(NeighbourList<D>& out) {
   }
 }
 
+// The same from 16-bit offsets: offset t of particle i's row is the t-th particle of
+// the ranges of i's cell (recomputed once per cell a thread meets).
+template <int D>
+void NeighbourSearch<D>::Impl::copyNarrowRows(NeighbourList<D>& out, const PeriodicBox<D>& box) {
+  const Index n = Index(out.offset.size()) - 1;
+  const Index* offset = out.offset.data();
+  out.j.resize(std::size_t(offset[n]));
+  Index* oj = out.j.data();
+#pragma omp parallel
+  {
+    Index ranges[2 * 27], first[28];
+    std::int64_t cell = -1;
+#pragma omp for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+      if (cellOf[i] != cell) {
+        cell = cellOf[i];
+        const int nr = neighbourRanges(cell, box, ranges);
+        first[0] = 0;
+        for (int q = 0; q < nr; ++q) first[q + 1] = first[q] + ranges[2 * q + 1] - ranges[2 * q];
+      }
+      const std::uint16_t* src = foundNarrow[rowThread[i]].data() + rowStart[i];
+      const Index len = offset[i + 1] - offset[i];
+      Index* row = oj + offset[i];
+      bool isSorted = true;
+      Index last = -1;
+      int q = 0;
+      for (Index t = 0; t < len; ++t) {
+        const Index local = src[t];  // ascending along the row
+        while (local >= first[q + 1]) ++q;
+        const Index j = sorted[ranges[2 * q] + local - first[q]];
+        isSorted &= (j > last);
+        last = j;
+        row[t] = j;
+      }
+      // rare (particles not in cell order, or a periodic wrap)
+      if (!isSorted) std::sort(row, row + len);
+    }
+  }
+}
+
 template <int D>
 void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& out) {
   Impl& m = *impl_;
@@ -324,51 +367,63 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
   m.rowStart.resize(n);
   m.rowThread.resize(n);
   const int nt = std::min(omp_get_max_threads(), 255);
-  if (int(m.found.size()) < nt) m.found.resize(nt);
+  Index fullest = 0;
+#pragma omp parallel for schedule(static) reduction(max : fullest)
+  for (std::int64_t c = 0; c < numCells; ++c) fullest = std::max(fullest, cellStart[c + 1] - cellStart[c]);
+  const bool narrow = std::int64_t(fullest) * (D == 2 ? 9 : 27) <= 65535;
 
-  // --- scan: neighbour positions per thread, row lengths into offset[i+1]
+  // --- scan: a thread's neighbours into its buffer, row lengths into offset[i+1]
+  auto scan = [&](auto& buffers) {
+    using T = typename std::decay_t<decltype(buffers)>::value_type::value_type;
+    if (int(buffers.size()) < nt) buffers.resize(nt);
 #pragma omp parallel num_threads(nt)
-  {
-    const int t = omp_get_thread_num();
-    std::vector<Index>& found = m.found[t];  // size = capacity; `used` entries valid
-    std::size_t used = 0;
-    Index ranges[2 * 27];
+    {
+      const int t = omp_get_thread_num();
+      auto& found = buffers[t];  // size = capacity; `used` entries valid
+      std::size_t used = 0;
+      Index ranges[2 * 27];
 #pragma omp for schedule(dynamic, 64)
-    for (std::int64_t c = 0; c < numCells; ++c) {
-      const Index b = cellStart[c], e = cellStart[c + 1];
-      if (b == e) continue;
-      const int nr = m.neighbourRanges(c, box_, ranges);
-      std::size_t candidates = 0;
-      for (int q = 0; q < nr; ++q) candidates += std::size_t(ranges[2 * q + 1] - ranges[2 * q]);
-      for (Index k = b; k < e; ++k) {
-        if (found.size() < used + candidates) {
-          // Grown by a quarter, not doubled: the buffers stay allocated between builds,
-          // so their slack counts in every step's peak memory.
-          const std::size_t grown = std::max(found.size() + found.size() / 4, used + candidates);
-          found.reserve(grown);
-          found.resize(grown);
-        }
-        Index* dst = found.data() + used;
-        const Vec<D> xi = xs[k];
-        std::size_t cnt = 0;
-        for (int q = 0; q < nr; ++q) {
-          for (Index l = ranges[2 * q]; l < ranges[2 * q + 1]; ++l) {
-            Vec<D> d = xi - xs[l];
-            if (periodic) minImage(d);
-            dst[cnt] = l;  // branch-free append
-            cnt += (d.squaredNorm() < r2max) & (l != k);
+      for (std::int64_t c = 0; c < numCells; ++c) {
+        const Index b = cellStart[c], e = cellStart[c + 1];
+        if (b == e) continue;
+        const int nr = m.neighbourRanges(c, box_, ranges);
+        std::size_t candidates = 0;
+        for (int q = 0; q < nr; ++q) candidates += std::size_t(ranges[2 * q + 1] - ranges[2 * q]);
+        for (Index k = b; k < e; ++k) {
+          if (found.size() < used + candidates) {
+            // Grown by a quarter, not doubled: the buffers stay allocated between builds,
+            // so their slack counts in every step's peak memory.
+            const std::size_t grown = std::max(found.size() + found.size() / 4, used + candidates);
+            found.reserve(grown);
+            found.resize(grown);
           }
+          T* dst = found.data() + used;
+          const Vec<D> xi = xs[k];
+          std::size_t cnt = 0;
+          Index local = 0;  // the candidate's offset in the cell's ranges
+          for (int q = 0; q < nr; ++q) {
+            for (Index l = ranges[2 * q]; l < ranges[2 * q + 1]; ++l, ++local) {
+              Vec<D> d = xi - xs[l];
+              if (periodic) minImage(d);
+              dst[cnt] = T(std::is_same_v<T, Index> ? l : local);  // branch-free append
+              cnt += (d.squaredNorm() < r2max) & (l != k);
+            }
+          }
+          const Index i = sorted[k];
+          offset[i + 1] = Index(cnt);
+          m.rowStart[i] = Index(used);
+          m.rowThread[i] = std::uint8_t(t);
+          used += cnt;
         }
-        const Index i = sorted[k];
-        offset[i + 1] = Index(cnt);
-        m.rowStart[i] = Index(used);
-        m.rowThread[i] = std::uint8_t(t);
-        used += cnt;
       }
     }
-  }
+  };
+  m.narrow = narrow;
+  if (narrow) scan(m.foundNarrow);
+  else scan(m.found);
   for (Index i = 0; i < n; ++i) offset[i + 1] += offset[i];
-  m.copyRows(out);
+  if (narrow) m.copyNarrowRows(out, box_);
+  else m.copyRows(out);
   out.attach(x, box_);
 }
 
@@ -384,6 +439,9 @@ std::int64_t NeighbourSearch<D>::numCells() const { return impl_->numCells; }
 
 template <int D>
 double NeighbourSearch<D>::cellSize(int a) const { return 1.0 / impl_->invCell[a]; }
+
+template <int D>
+bool NeighbourSearch<D>::usedOffsets() const { return impl_->narrow; }
 
 // ---------------------------------------------------------------- reference
 template <int D>

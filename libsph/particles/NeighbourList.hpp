@@ -83,6 +83,9 @@ class NeighbourSearch {
   // edge along direction a.
   std::int64_t numCells() const;
   double cellSize(int a) const;
+  // Whether the last build kept its rows as 16-bit offsets into each cell's candidates
+  // (false: a cell held more than 65535 / 3^D particles; diagnostics, tests).
+  bool usedOffsets() const;
 
  private:
   double radius_;

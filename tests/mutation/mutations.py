@@ -200,6 +200,18 @@ MUTATIONS = [
              "const double scale = -omega * inv[i];", "const double scale = -inv[i];",
              [r"^unit\.test_linearSolvers_sparseProducts$"],
              "the prolongator's smoothing step is taken with omega = 1 (it diverges as the AMG's preconditioner)"),
+    Mutation("neighbourOffsetsUnguarded", "libsph/particles/NeighbourList.cpp",
+             "const bool narrow = std::int64_t(fullest) * (D == 2 ? 9 : 27) <= 65535;",
+             "const bool narrow = true;",
+             [r"^unit\.test_particles_neighbours$"],
+             "the search keeps 16-bit offsets into a cell's candidates even where a cell is crowded enough "
+             "for them to wrap and name the wrong neighbours"),
+    Mutation("neighbourOffsetMisread", "libsph/particles/NeighbourList.cpp",
+             "const Index j = sorted[ranges[2 * q] + local - first[q]];",
+             "const Index j = sorted[ranges[2 * q] + local];",
+             [r"^unit\.test_particles_neighbours$"],
+             "a row's 16-bit offset is read as a position in its range without the range's start: "
+             "neighbours from the wrong cells"),
     Mutation("pairVectorNotMinimumImage", "libsph/particles/NeighbourList.hpp",
              "return periodic ? box.difference(xi, xj) : Vec<D>(xi - xj);",
              "return Vec<D>(xi - xj);",

@@ -265,6 +265,30 @@ BOOST_AUTO_TEST_CASE(periodic_length_too_short) {
   BOOST_CHECK_THROW(NeighbourSearch<2>(0.0, PeriodicBox<2>{}), InputError);
 }
 
+// Rows are kept as 16-bit offsets into a cell's candidates only while no cell holds more
+// than 65535 / 3^D particles (more could wrap them); a crowded cell makes the scan keep
+// 32-bit positions. Both give the brute force's pairs. (The crowded case in 3D: a 2D cell
+// would need 7282 particles, 26 million pairs; the code is the same for both.)
+template <int D>
+void crowdedCell(std::size_t crowd) {
+  const double radius = 0.04;
+  auto x = randomPoints<D>(1500, 0.0, 1.0, 21);
+  auto cluster = randomPoints<D>(crowd, 0.505, 0.515, 22);  // inside one cell of side radius
+  x.insert(x.end(), cluster.begin(), cluster.end());
+  NeighbourSearch<D> search(radius);
+  NeighbourList<D> nl, ref;
+  search.build(x, nl);
+  bruteForceNeighbours(x, radius, {}, ref);
+  BOOST_TEST(search.usedOffsets() == (crowd * 27 <= 65535));
+  checkEqual(nl, ref);
+  checkRows(nl, radius);
+}
+
+BOOST_AUTO_TEST_CASE(crowded_cell_equals_brute_force) {
+  crowdedCell<3>(2400);  // 27 x 2400 <= 65535: offsets
+  crowdedCell<3>(2500);  // 27 x 2500 > 65535: positions
+}
+
 BOOST_AUTO_TEST_CASE(thread_count_independent_and_no_reallocation) {
   auto x = randomPoints<3>(20000, 0.0, 1.0, 11);
   NeighbourSearch<3> search(0.06);
