@@ -193,17 +193,19 @@ def write(csvPath, mdPath, quick):
             "threads), outputs byte for byte the same at every stage; peak RSS per particle at 80k / 320k: 3.90 / "
             "3.51 KB before that day's changes; 3.36 / 2.99 with the AMG setup's products built in place; 3.03 / "
             "2.61 with pairs storing only j (r_ij and |r_ij| from the positions; the same build measured again "
-            "before the next change: 3.14 / 2.58); 2.85 / 2.37 with the Galerkin "
-            "operator formed without storing A P and the search's per-thread buffers grown by a quarter; 2.73 / "
-            "2.22 with W_ij computed from |r_ij| where a pass uses it (its fill and refresh passes gone: the step "
-            "is not slower); 2.71 / 2.18 with the product's row cache in a direct-mapped table and the VTP writer "
-            "lending VTK the fields. Of that, 57.5 MB for any case is the executable and its shared libraries "
-            "(VTK, Trilinos, PETSc, hypre): 0.17 KB a particle at 320k. The heap holds per pair (about 20) the "
-            "SPH2 gradient (16 B) and Laplacian (8 B) weights, the index (4 B) and the search's per-thread copy "
-            "(4 B and a quarter); per particle the PPE matrix (12 B an entry), the AMG hierarchy (P, R = P^T, "
-            "coarse operators, three vectors), the Krylov vectors (64 B) and the fields (about 0.3 KB). Next: "
-            "the restriction applied as P^T instead of a stored R, the search's copy as 16-bit offsets, "
-            "BiCGSTAB's s kept in r |")
+            "later: 3136 / 2581 B, the reference for what follows); 2854 / 2371 B with the "
+            "Galerkin operator formed without storing A P and the search's per-thread buffers grown by a quarter; "
+            "2733 / 2215 B with W_ij computed from |r_ij| where a pass uses it (its fill and refresh passes gone); "
+            "2709 / 2178 B with the product's row cache in a direct-mapped table and the VTP writer lending VTK the "
+            "fields; 2548 / 2026 B with the search's rows as 16-bit offsets into each cell's candidates, the AMG "
+            "levels rebuilt in place, the forces summed in u*'s storage and BiCGSTAB's s in r. Three runs of the "
+            "320k case differ by 0.3 MB; the peak is reached at the step's end, while the VTP file is written. "
+            "Of the 2026 B, 57.5 MB for any case is the executable and its shared libraries (VTK, Trilinos, PETSc, "
+            "hypre): 0.18 KB a particle at 320k. The heap holds per pair (about 20) the SPH2 gradient (16 B) and "
+            "Laplacian (8 B) weights, the index (4 B) and the search's per-thread copy (2 B and a quarter); per "
+            "particle the PPE matrix (12 B an entry), the AMG hierarchy (P, R = P^T, coarse operators, two "
+            "vectors), seven Krylov vectors and the fields (about 0.3 KB). Next: the restriction applied as P^T "
+            "instead of a stored R |")
     # 3D targets (issue 19): per particle of every kind, 2 threads.
     t100 = find(rows, "threeD", "3D-100k", 2)
     if t100:
@@ -278,9 +280,9 @@ def write(csvPath, mdPath, quick):
         add("from 100k to 800k. The neighbour search and the SPH2 weights (9x9 moment matrices) are the next")
         add("18 % and 14 % on one thread. Memory: about 60 pairs per fluid particle, each with its index and")
         add("the SPH2 gradient and Laplacian weights (36 B; r_ij, its length and W are computed from the")
-        add("positions where used since 2026-12-04: peak RSS per particle at 100k 4.29 KB before, 3.75 KB after,")
-        add("bit for bit the same results), plus the PPE rows. Keeping the symmetric arrays once per pair would")
-        add("halve the pairs' share.")
+        add("positions where used since 2026-12-04: peak RSS per particle of the 115k-particle case 4292 B")
+        add("before that day's memory changes, 3569 B after, bit for bit the same results), plus the PPE rows.")
+        add("Keeping the symmetric arrays once per pair would halve the pairs' share.")
         add("")
 
     # ---------------------------------------------------------- throughput
@@ -456,16 +458,20 @@ def write(csvPath, mdPath, quick):
         tot = sum(st.values()) or 1
         add("At 20k particles on 2 threads the split of a step is: " +
             ", ".join(f"{k} {100 * v / tot:.0f} %" for k, v in sorted(st.items(), key=lambda kv: -kv[1])[:6]) + ".")
-    add("- The PPE solve: the AMG setup runs every 10 steps and at each reordering. Its products are")
-    add("  row-parallel since 2026-12-04 (SparseProducts), but measured on the K&O 20k systems (bench_pressure,")
-    add("  best of 5 passes, shared machine) a setup still costs about 20 ms on one thread and on two (AMG")
-    add("  rebuilt every step against kept: 42-47 against 21-22 ms per solve): the products count their rows")
-    add("  before filling them, the aggregation is sequential, and the levels below 8192 rows run on one thread.")
-    add("  Keeping the hierarchy across reorderings by permuting it would halve the setups. A looser tolerance")
-    add("  (1e-6) would cut iterations but changes accuracy and was not adopted.")
-    add("- The AMG's levels below 8192 rows run on one thread (measured 2026-11-30 at 20k, idle machine, PASSIVE: lowering")
-    add("  the bound to 2048 or 512 rows did not speed up the 2-thread solve); single-precision levels (half the")
-    add("  bytes per cycle) gave no gain at 20k either, where the levels fit in cache, and were not kept.")
+    add("- The PPE solve: measured on the K&O 20k systems (bench_pressure, 20 systems, best of 3 passes, same")
+    add("  machine, 2026-12-04), a solve with the hierarchy kept took 20.0-20.6 ms on two threads and 21.4 ms on")
+    add("  one before that day's cycle changes, 13.8-14.1 and 19.3-19.5 ms after (same iterates bit for bit): the")
+    add("  finest level's right-hand side and result are the Krylov vectors (no copies), the first sweep from")
+    add("  zero stops each row at its diagonal, the smoother sums a row's runs before, in and after its thread's")
+    add("  block without testing each column, prolongation is fused with the update, and the row-wise products")
+    add("  (residual, restriction, prolongation) split between threads by their entries, not their rows (the")
+    add("  restriction onto a 2.6k-row level ran on one thread). A setup (rebuilt every step: 44 against 34 ms")
+    add("  per solve on two threads) is about 20 ms; its Galerkin product now forms rows of A P where a row of R")
+    add("  needs them (no stored A P) and is 17 % slower on one thread. Not kept: the smoother's levels split")
+    add("  between threads below 8192 rows (2048: another 7 % off the 2-thread solve, the same 5 iterations, but")
+    add("  the block-Jacobi coupling changes the iterates); GMRES(10) with the same AMG (10 iterations against")
+    add("  BiCGSTAB's 5: the same number of V-cycles, and each iteration adds its Gram-Schmidt work).")
+    add("- Single-precision AMG levels gave no gain at 20k, where the levels fit in cache, and were not kept.")
     add("- Measurements on a loaded shared machine inflate the 2-thread wall times; rerun")
     add("  `bench/run-performance` when `uptime` shows a load below 0.5, with the OpenMP policy users get.")
     add("")

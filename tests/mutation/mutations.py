@@ -104,7 +104,7 @@ MUTATIONS = [
              "the last good state keeps the moving walls' rest positions in the step's order: a failure "
              "after a reorder or a removal writes walls that resume from other particles' rest positions"),
     Mutation("amgWideStencilUntruncated", "libsph/linearSolvers/AggregationAMG.cpp",
-             "    if (wide_) truncate(P);\n",
+             "    if (wide_) truncate(L.P);\n",
              "",
              [r"^unit\.test_linearSolvers_pressureSystems$"],
              "the 3D coarse operators fill in: operator complexity 1.21 instead of 1.08"),
