@@ -11,7 +11,8 @@
 // the same or adjacent cells, and the grid's size does not grow with the
 // distance of the far particles;
 // (2) counting sort of particles by cell (wrapped positions copied in cell
-// order for locality); (3) parallel scan over cells: each thread appends the
+// order for locality); (3) parallel scan over cells, each thread a run of cells
+// holding an equal share of the particles: it appends the
 // neighbours found to its own buffer and records the row length: as 16-bit
 // offsets into the cell's list of candidates (the particles of its 3^D cells)
 // when no cell holds more than 65535 / 3^D particles, which halves the buffers
@@ -378,12 +379,19 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
     if (int(buffers.size()) < nt) buffers.resize(nt);
 #pragma omp parallel num_threads(nt)
     {
-      const int t = omp_get_thread_num();
+      const int t = omp_get_thread_num(), team = omp_get_num_threads();
       auto& found = buffers[t];  // size = capacity; `used` entries valid
       std::size_t used = 0;
       Index ranges[2 * 27];
-#pragma omp for schedule(dynamic, 64)
-      for (std::int64_t c = 0; c < numCells; ++c) {
+      // The thread's cells: a run holding an equal share of the particles (cellStart is
+      // their running count), so each buffer holds about 1/team of the pairs, the same
+      // share in every build, and its capacity does not drift up with the scheduling.
+      const auto cut = [&](int k) {
+        const Index target = Index(std::int64_t(n) * k / team);
+        return std::int64_t(std::lower_bound(cellStart, cellStart + numCells, target) - cellStart);
+      };
+      const std::int64_t cBegin = cut(t), cEnd = t + 1 == team ? numCells : cut(t + 1);
+      for (std::int64_t c = cBegin; c < cEnd; ++c) {
         const Index b = cellStart[c], e = cellStart[c + 1];
         if (b == e) continue;
         const int nr = m.neighbourRanges(c, box_, ranges);
