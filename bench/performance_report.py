@@ -87,9 +87,12 @@ GROUPS = [("neighbours", ["neighbours"]), ("weights", ["weights"]), ("density", 
 
 
 # The 3D memory measured by hand after the changes of 2026-12-04 (the threeD part was not rerun).
-THREE_D_MEMORY = ("measured 2026-12-04 on the 3D-100k case (20 steps, 2 threads, same machine, bit-for-bit the same "
-                  "results): peak RSS 592 MB (6.14 KB per particle) before, 416 MB (4.32 KB) after, and 16.5 "
-                  "against 15.8 us per fluid particle-step")
+THREE_D_MEMORY = ("measured 2026-12-04, same machine, results bit for bit the same at every stage: the 3D-100k "
+                  "case (20 steps, 2 threads) 6.14 KB per particle before the day's first changes, 4.32 KB after "
+                  "them, 3554 B at the day's end (3474 B on one thread), when it also ran at 4.52 us per "
+                  "particle-step of all kinds on 2 threads (11.2 us per fluid particle-step, against 15.8 after the "
+                  "first changes; the table's rows are from 2026-12-02, another host); the 400k and 800k cases were "
+                  "not rerun")
 
 
 def write(csvPath, mdPath, quick):
@@ -230,8 +233,8 @@ def write(csvPath, mdPath, quick):
         worst, bpp = max(perParticle.items(), key=lambda kv: kv[1])
         add(f"| 3D: <= 4 KB memory per particle | {f(bpp)} B (largest peak RSS / all particles, {worst}) | "
             f"{'yes' if bpp <= 4096 else 'no'} | a 3D fluid particle has about 60 neighbours (2D: 13): the pair "
-            "arrays (index, W, the SPH2 gradient and Laplacian weights: 44 B a pair since 2026-12-04, 76 B before) "
-            "and the PPE rows grow with them. The rows of this table are from before 2026-12-04; " + THREE_D_MEMORY + " |")
+            "arrays (index and the SPH2 gradient and Laplacian weights: 36 B a pair since 2026-12-04, 76 B before) "
+            "and the PPE rows grow with them; " + THREE_D_MEMORY + " |")
     add("")
 
     # ---------------------------------------------------------- 3D
