@@ -87,6 +87,21 @@ struct NeighbourSearch<D>::Impl {
   // After the scan (row lengths summed into out.offset): the rows, sorted by j.
   void copyRows(NeighbourList<D>& out);
   void copyNarrowRows(NeighbourList<D>& out, const PeriodicBox<D>& box);
+  // Whether 16-bit offsets into a cell's candidates cannot wrap: no cell holds more than
+  // 65535 / 3^D particles.
+  bool offsetsFit() const {
+    Index fullest = 0;
+#pragma omp parallel for schedule(static) reduction(max : fullest)
+    for (std::int64_t c = 0; c < numCells; ++c) fullest = std::max(fullest, cellStart[c + 1] - cellStart[c]);
+    return std::int64_t(fullest) * (D == 2 ? 9 : 27) <= 65535;
+  }
+  // The first cell of share k of `team` runs of cells holding equal shares of the
+  // particles (cellStart counts them); share `team` ends at numCells.
+  std::int64_t firstCellOfShare(int k, int team) const {
+    if (k >= team) return numCells;
+    const Index target = Index(std::int64_t(cellStart[numCells]) * k / team);
+    return std::int64_t(std::lower_bound(cellStart.begin(), cellStart.begin() + numCells, target) - cellStart.begin());
+  }
   // The particles of the distinct neighbour cells of cell c (including c), as
   // ranges [b, e) of cell-order positions; consecutive cells are merged.
   int neighbourRanges(std::int64_t c, const PeriodicBox<D>& box, Index* ranges) const;
@@ -368,10 +383,7 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
   m.rowStart.resize(n);
   m.rowThread.resize(n);
   const int nt = std::min(omp_get_max_threads(), 255);
-  Index fullest = 0;
-#pragma omp parallel for schedule(static) reduction(max : fullest)
-  for (std::int64_t c = 0; c < numCells; ++c) fullest = std::max(fullest, cellStart[c + 1] - cellStart[c]);
-  const bool narrow = std::int64_t(fullest) * (D == 2 ? 9 : 27) <= 65535;
+  const bool narrow = m.offsetsFit();
 
   // --- scan: a thread's neighbours into its buffer, row lengths into offset[i+1]
   auto scan = [&](auto& buffers) {
@@ -386,11 +398,7 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
       // The thread's cells: a run holding an equal share of the particles (cellStart is
       // their running count), so each buffer holds about 1/team of the pairs, the same
       // share in every build, and its capacity does not drift up with the scheduling.
-      const auto cut = [&](int k) {
-        const Index target = Index(std::int64_t(n) * k / team);
-        return std::int64_t(std::lower_bound(cellStart, cellStart + numCells, target) - cellStart);
-      };
-      const std::int64_t cBegin = cut(t), cEnd = t + 1 == team ? numCells : cut(t + 1);
+      const std::int64_t cBegin = m.firstCellOfShare(t, team), cEnd = m.firstCellOfShare(t + 1, team);
       for (std::int64_t c = cBegin; c < cEnd; ++c) {
         const Index b = cellStart[c], e = cellStart[c + 1];
         if (b == e) continue;

@@ -201,8 +201,8 @@ MUTATIONS = [
              [r"^unit\.test_linearSolvers_sparseProducts$"],
              "the prolongator's smoothing step is taken with omega = 1 (it diverges as the AMG's preconditioner)"),
     Mutation("neighbourOffsetsUnguarded", "libsph/particles/NeighbourList.cpp",
-             "const bool narrow = std::int64_t(fullest) * (D == 2 ? 9 : 27) <= 65535;",
-             "const bool narrow = true;",
+             "return std::int64_t(fullest) * (D == 2 ? 9 : 27) <= 65535;",
+             "return true;",
              [r"^unit\.test_particles_neighbours$"],
              "the search keeps 16-bit offsets into a cell's candidates even where a cell is crowded enough "
              "for them to wrap and name the wrong neighbours"),
