@@ -84,9 +84,11 @@ struct NeighbourSearch<D>::Impl {
   // of the coordinate, widened by a tenth of their distance and the radius.
   void bulkBox(const std::vector<Vec<D>>& x, double radius, Vec<D>& mn, Vec<D>& mx);
   void sortByCell(const std::vector<Vec<D>>& x, const PeriodicBox<D>& box);
-  // After the scan (row lengths summed into out.offset): the rows, sorted by j.
-  void copyRows(NeighbourList<D>& out);
-  void copyNarrowRows(NeighbourList<D>& out, const PeriodicBox<D>& box);
+  // After the scan (row lengths summed into out.offset): the rows, sorted by j, from the
+  // per-thread buffers of cell-order positions (Index) or of offsets into the cell's
+  // candidates (std::uint16_t).
+  template <class T>
+  void copyRows(NeighbourList<D>& out, const std::vector<std::vector<T>>& buffers, const PeriodicBox<D>& box);
   // Whether 16-bit offsets into a cell's candidates cannot wrap: no cell holds more than
   // 65535 / 3^D particles.
   bool offsetsFit() const {
@@ -284,41 +286,14 @@ NeighbourSearch<D>::NeighbourSearch(double radius, PeriodicBox<D> box)
   }
 }
 
-// The rows of the scan, in particle order and sorted by j.
+// The rows of the scan, in particle order and sorted by j. An offset t of particle i's
+// row is the t-th particle of the ranges of i's cell (recomputed once per cell a thread
+// meets); a position is the cell-order position itself.
 template <int D>
-void NeighbourSearch<D>::Impl::copyRows(NeighbourList<D>& out) {
-  Impl& m = *this;
-  const Index n = Index(out.offset.size()) - 1;
-  const Index* offset = out.offset.data();
-  const Index* sorted = m.sorted.data();
-  const std::size_t numPairs = std::size_t(offset[n]);
-  out.j.resize(numPairs);
-  Index* oj = out.j.data();
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    Index* src = m.found[m.rowThread[i]].data() + m.rowStart[i];
-    const Index len = offset[i + 1] - offset[i];
-    const Index p0 = offset[i];
-    for (int attempt = 0; attempt < 2; ++attempt) {
-      bool isSorted = true;
-      Index last = -1;
-      for (Index t = 0; t < len; ++t) {
-        const Index j = sorted[src[t]];
-        isSorted &= (j > last);
-        last = j;
-        oj[p0 + t] = j;
-      }
-      if (isSorted) break;
-      // rare (particles not in cell order, or a periodic wrap): sort and redo
-      std::sort(src, src + len, [&](Index u, Index v) { return sorted[u] < sorted[v]; });
-    }
-  }
-}
-
-// The same from 16-bit offsets: offset t of particle i's row is the t-th particle of
-// the ranges of i's cell (recomputed once per cell a thread meets).
-template <int D>
-void NeighbourSearch<D>::Impl::copyNarrowRows(NeighbourList<D>& out, const PeriodicBox<D>& box) {
+template <class T>
+void NeighbourSearch<D>::Impl::copyRows(NeighbourList<D>& out, const std::vector<std::vector<T>>& buffers,
+                                        const PeriodicBox<D>& box) {
+  constexpr bool offsets = !std::is_same_v<T, Index>;
   const Index n = Index(out.offset.size()) - 1;
   const Index* offset = out.offset.data();
   out.j.resize(std::size_t(offset[n]));
@@ -329,22 +304,25 @@ void NeighbourSearch<D>::Impl::copyNarrowRows(NeighbourList<D>& out, const Perio
     std::int64_t cell = -1;
 #pragma omp for schedule(static)
     for (Index i = 0; i < n; ++i) {
-      if (cellOf[i] != cell) {
+      if (offsets && cellOf[i] != cell) {
         cell = cellOf[i];
         const int nr = neighbourRanges(cell, box, ranges);
         first[0] = 0;
         for (int q = 0; q < nr; ++q) first[q + 1] = first[q] + ranges[2 * q + 1] - ranges[2 * q];
       }
-      const std::uint16_t* src = foundNarrow[rowThread[i]].data() + rowStart[i];
+      const T* src = buffers[rowThread[i]].data() + rowStart[i];
       const Index len = offset[i + 1] - offset[i];
       Index* row = oj + offset[i];
       bool isSorted = true;
       Index last = -1;
       int q = 0;
       for (Index t = 0; t < len; ++t) {
-        const Index local = src[t];  // ascending along the row
-        while (local >= first[q + 1]) ++q;
-        const Index j = sorted[ranges[2 * q] + local - first[q]];
+        Index l = Index(src[t]);
+        if constexpr (offsets) {
+          while (l >= first[q + 1]) ++q;  // offsets ascend along the row
+          l = ranges[2 * q] + l - first[q];
+        }
+        const Index j = sorted[l];
         isSorted &= (j > last);
         last = j;
         row[t] = j;
@@ -363,7 +341,6 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
   m.sortByCell(x, box_);
   const double r2max = radius_ * radius_;
   const bool periodic = box_.any();
-  const std::int64_t numCells = m.numCells;
   const Index* cellStart = m.cellStart.data();
   const Index* sorted = m.sorted.data();
   const Vec<D>* xs = m.xs.data();
@@ -383,9 +360,9 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
   m.rowStart.resize(n);
   m.rowThread.resize(n);
   const int nt = std::min(omp_get_max_threads(), 255);
-  const bool narrow = m.offsetsFit();
 
-  // --- scan: a thread's neighbours into its buffer, row lengths into offset[i+1]
+  // --- scan: a thread's neighbours into its buffer, row lengths into offset[i+1];
+  // then the prefix sum and the rows
   auto scan = [&](auto& buffers) {
     using T = typename std::decay_t<decltype(buffers)>::value_type::value_type;
     if (int(buffers.size()) < nt) buffers.resize(nt);
@@ -433,13 +410,12 @@ void NeighbourSearch<D>::build(const std::vector<Vec<D>>& x, NeighbourList<D>& o
         }
       }
     }
+    for (Index i = 0; i < n; ++i) offset[i + 1] += offset[i];
+    m.copyRows(out, buffers, box_);
   };
-  m.narrow = narrow;
-  if (narrow) scan(m.foundNarrow);
+  m.narrow = m.offsetsFit();
+  if (m.narrow) scan(m.foundNarrow);
   else scan(m.found);
-  for (Index i = 0; i < n; ++i) offset[i + 1] += offset[i];
-  if (narrow) m.copyNarrowRows(out, box_);
-  else m.copyRows(out);
   out.attach(x, box_);
 }
 

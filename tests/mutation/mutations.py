@@ -207,8 +207,8 @@ MUTATIONS = [
              "the search keeps 16-bit offsets into a cell's candidates even where a cell is crowded enough "
              "for them to wrap and name the wrong neighbours"),
     Mutation("neighbourOffsetMisread", "libsph/particles/NeighbourList.cpp",
-             "const Index j = sorted[ranges[2 * q] + local - first[q]];",
-             "const Index j = sorted[ranges[2 * q] + local];",
+             "l = ranges[2 * q] + l - first[q];",
+             "l = ranges[2 * q] + l;",
              [r"^unit\.test_particles_neighbours$"],
              "a row's 16-bit offset is read as a position in its range without the range's start: "
              "neighbours from the wrong cells"),
