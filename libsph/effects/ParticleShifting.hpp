@@ -29,6 +29,11 @@ class ParticleShifting {
   EffectNeeds needs() const;
   // Timed stages: "shifting" (gradient, density, cap and update) and one per term.
   void registerTimers(StageTimers& timers);
+  // <grad u^{n+1}> for the Taylor correction, walls showing the fluid's Shepard velocity,
+  // at the advected positions r' (step 8 of docs/method.md 13): called before the
+  // position corrections (ADS) move particles, so that the Shepard weights W_wf are those
+  // of r'. Nothing without a Taylor correction.
+  void velocityGradient(FlowState<D>& s, StageTimers& timers);
   // dr = cap(sum of the terms); r += dr; u += <grad u> dr where Taylor-corrected.
   void apply(FlowState<D>& s, StageTimers& timers);
 

@@ -208,6 +208,7 @@ void IsphStep<D>::advance(double dt) {
   solvePressure();
   correct();
   advect();
+  if (effects_.shifting) effects_.shifting->velocityGradient(s_, timers_);
   correctPositions();
   shift();
   dropGhosts();
