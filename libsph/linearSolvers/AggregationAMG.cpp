@@ -19,28 +19,19 @@ namespace {
 // (6k, 21k): the symmetric test |a_ij| >= 0.08 sqrt(a_ii a_jj) never finds a wall
 // row's couplings strong, and 3D aggregation then stalls (80k: 80148 -> 3592 ->
 // ... 2053 rows, 4.2 s per solve); row-wise 0.25 coarsens 80148 -> 3592 -> 319.
+// On the K&O 20k systems (2D, 23k unknowns, 18 entries a row) 0.15 and 0.35 solve
+// as fast (docs/performance.md).
 constexpr double kStrength = 0.25;
 constexpr double kDominance = 0.1;
-// Narrow stencils (2D PPE rows: about 13 entries) keep the symmetric test
-// |a_ij| >= kTheta sqrt(a_ii a_jj) and the untruncated prolongator, with which every
-// 2D case and comparison was validated. The wide-stencil path works in 2D too (21k
-// dam break: 25 against 44 ms per solve on one thread), but its iterates differ within
-// the solver tolerance, and the weir's trajectory then met a defect of the outlet
-// (outlet particles carried upstream into the floor by a backflow, now returned to the
-// fluid: docs/boundaries.md); to be revisited with the 2D cases' references rebuilt.
-// kTheta measured on the K&O dam-break systems (23k unknowns, BiCGSTAB to 1e-8): 0.08
-// -> 5 iterations, 0 -> 9 (aggregates of ~25), 0.25 -> much the same as 0.08 once rows
-// without a strong coupling still join an aggregate; omega 2/3 (1.0 diverges); 2 sweeps:
-// 5 -> 4 iterations at a higher cost per cycle.
-constexpr double kTheta = 0.08;
-// A stencil is wide when its longest row has more than kWideRow entries: a 2D fluid
-// row has about 20 (support radius 2.4 d0), a 3D one about 60-80.
-constexpr int kWideRow = 40;
 // The smoothed prolongator keeps, in each row, the entries of at least kTruncation
 // times the row's largest, rescaled to the row's old sum (constants stay exact).
 // Untruncated, a 3D stencil of ~60 neighbours makes A_c = R A P dense (15k: operator
 // complexity 5.2, coarse rows of 770 entries); truncated 1.2 (15k: 345 -> 40 ms per
-// solve; 80k: 4.2 s -> 0.44 s, 7 iterations). 0.3 gives 9 iterations at 80k.
+// solve; 80k: 4.2 s -> 0.44 s, 7 iterations). 0.3 gives 9 iterations at 80k. In 2D
+// (K&O 20k, 2 threads) 0.1 and 0.3 solve as fast, none doubles the iterations; the
+// symmetric strength test with the untruncated prolongator, which 2D used before,
+// made the second level 3861 rows of 38 entries (operator complexity 1.40 against
+// 1.13) and a solve 1.4-1.6 times slower for one iteration fewer.
 constexpr double kTruncation = 0.2;
 constexpr double kOmega = 2.0 / 3.0;  // prolongation smoothing (4/3 / rho(D^-1 A), rho ~ 2)
 constexpr int kSweeps = 1;            // hybrid Gauss-Seidel sweeps before and after
@@ -69,13 +60,13 @@ void diagonal(const SparseMatrixR& A, std::vector<double>& d) {
 }
 
 // Aggregates of the strong-coupling graph; -1 for rows left out (no strong coupling).
-int aggregate(const SparseMatrixR& A, const std::vector<double>& d, bool wide, std::vector<int>& agg) {
+int aggregate(const SparseMatrixR& A, const std::vector<double>& d, std::vector<int>& agg) {
   const int n = int(A.rows());
   const int* outer = A.outerIndexPtr();
   const int* col = A.innerIndexPtr();
   const double* val = A.valuePtr();
-  std::vector<double> threshold(wide ? n : 0, 0.0);  // wide stencils: |a_ij| at or above is strong
-  for (int i = 0; wide && i < n; ++i) {
+  std::vector<double> threshold(n, 0.0);  // |a_ij| at or above is strong
+  for (int i = 0; i < n; ++i) {
     double largest = 0, mass = 0;
     for (int p = outer[i]; p < outer[i + 1]; ++p)
       if (col[p] != i) {
@@ -84,11 +75,7 @@ int aggregate(const SparseMatrixR& A, const std::vector<double>& d, bool wide, s
       }
     threshold[i] = mass < kDominance * std::abs(d[i]) ? HUGE_VAL : kStrength * largest;
   }
-  auto strong = [&](int i, int p) {
-    const int j = col[p];
-    if (j == i) return false;
-    return wide ? std::abs(val[p]) >= threshold[i] : std::abs(val[p]) >= kTheta * std::sqrt(std::abs(d[i] * d[j]));
-  };
+  auto strong = [&](int i, int p) { return col[p] != i && std::abs(val[p]) >= threshold[i]; };
   // -2: not yet aggregated, -1: isolated (never on a coarse grid).
   agg.assign(n, -2);
   for (int i = 0; i < n; ++i) {
@@ -206,9 +193,6 @@ bool AggregationAMG::setup(const SparseMatrixR& A) {
 void AggregationAMG::build(const SparseMatrixR& A) {
   levels_.reserve(kMaxLevels + 1);  // references to levels stay valid while they are added
   if (levels_.empty()) levels_.emplace_back();
-  int longest = 0;
-  for (int i = 0; i < int(A.rows()); ++i) longest = std::max(longest, A.outerIndexPtr()[i + 1] - A.outerIndexPtr()[i]);
-  wide_ = longest > kWideRow;
   const SparseMatrixR* cur = &A;
   for (int l = 0;; ++l) {
     Level& L = levels_[std::size_t(l)];
@@ -219,7 +203,7 @@ void AggregationAMG::build(const SparseMatrixR& A) {
     // Level 0's right-hand side and solution are the caller's vectors (apply).
     for (auto* v : {&L.x, &L.b}) v->assign(l == 0 ? 0 : n, 0.0);
     for (auto* v : {&L.r, &L.old}) v->assign(n, 0.0);
-    const int nc = (n <= kCoarsest || l + 1 >= kMaxLevels) ? 0 : aggregate(*cur, diag_, wide_, agg_);
+    const int nc = (n <= kCoarsest || l + 1 >= kMaxLevels) ? 0 : aggregate(*cur, diag_, agg_);
     if (nc == 0 || nc > 0.9 * n) {
       // Coarsest level, solved exactly (rows left out of aggregation are identity-like
       // and solved here too): dense LU when small, sparse LU when aggregation stalled.
@@ -239,7 +223,7 @@ void AggregationAMG::build(const SparseMatrixR& A) {
       return;
     }
     smoothedProlongator(*cur, L.invDiag, agg_, nc, kOmega, L.P);
-    if (wide_) truncate(L.P);
+    truncate(L.P);
     L.P.prune(0.0);
     transposeSparse(L.P, L.R);
     if (levels_.size() < std::size_t(l) + 2) levels_.emplace_back();

@@ -3,14 +3,12 @@
 // operation, no external library. One V-cycle per application:
 //   setup (every `reuse` steps, or when the numbering or size changes, or when
 //   the iteration count grew past 1.5x (+2) the count right after a setup):
-//     strong couplings: |a_ij| >= 0.08 sqrt(a_ii a_jj) for narrow stencils (2D), and
-//     for wide ones (a row of more than 40 entries: 3D) |a_ij| >= 0.25
-//     max_k |a_ik| row by row (none in rows whose off-diagonal mass is below
-//     0.1 |a_ii|); greedy aggregation (root + strong neighbours, then leftovers join
-//     the aggregate of their largest-coupled neighbour); tentative prolongation P0 =
-//     aggregate indicator; smoothed P = (I - omega D^-1 A) P0, omega = 2/3, for wide
-//     stencils each row truncated to its entries of at least 0.2 of its largest and
-//     rescaled to its sum; restriction R = P^T; coarse
+//     strong couplings: |a_ij| >= 0.25 max_k |a_ik| row by row (none in rows whose
+//     off-diagonal mass is below 0.1 |a_ii|); greedy aggregation (root + strong
+//     neighbours, then leftovers join the aggregate of their largest-coupled
+//     neighbour); tentative prolongation P0 = aggregate indicator; smoothed
+//     P = (I - omega D^-1 A) P0, omega = 2/3, each row truncated to its entries of
+//     at least 0.2 of its largest and rescaled to its sum; restriction R = P^T; coarse
 //     A_c = R A P; recursively until <= 400 unknowns (dense LU there). If the
 //     aggregation stalls on a larger level (a flow broken into many small
 //     clusters: a dispersed splash), that level is the coarsest and gets a sparse
@@ -74,7 +72,6 @@ class AggregationAMG final : public Preconditioner {
   std::vector<int> agg_;      // setup scratch: its aggregates
   int coarsestRows_ = 0;
   bool coarsestDense_ = true;
-  bool wide_ = false;  // the finest level has a row of more than 40 entries (3D)
   Eigen::PartialPivLU<Eigen::MatrixXd> coarse_;                                // <= kCoarsest rows
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> sparseCoarse_;  // stalled
 };

@@ -103,8 +103,8 @@ MUTATIONS = [
              [r"^unit\.test_isph_goodState$"],
              "the last good state keeps the moving walls' rest positions in the step's order: a failure "
              "after a reorder or a removal writes walls that resume from other particles' rest positions"),
-    Mutation("amgWideStencilUntruncated", "libsph/linearSolvers/AggregationAMG.cpp",
-             "    if (wide_) truncate(L.P);\n",
+    Mutation("amgProlongatorUntruncated", "libsph/linearSolvers/AggregationAMG.cpp",
+             "    truncate(L.P);\n",
              "",
              [r"^unit\.test_linearSolvers_pressureSystems$"],
              "the 3D coarse operators fill in: operator complexity 1.21 instead of 1.08"),

@@ -202,14 +202,15 @@ BOOST_AUTO_TEST_CASE(amg_solves_a_dispersed_system_with_a_sparse_coarsest_level)
   BOOST_TEST(amg2.coarsestRows() <= 400);
 }
 
-// A 3D PPE shaped like the solver's: an n^3 lattice (spacing 1) of fluid rows with the
-// kernel-Laplacian weights -2 w'(r)/r of every neighbour within 2h = 2.4 (about 80
-// entries per row), three layers of wall rows below them in the Adami form
-// p_w - sum_f (w_wf / sum w) p_f (diagonal 1, the fluid rows' diagonal ~ 40), and
-// the top layer Dirichlet (eliminated, like free-surface rows).
-SparseMatrixR ppeLike3D(int n) {
-  const int L = 3, nz = n + L;  // z = 0..L-1: walls
-  auto id = [&](int i, int j, int k) { return (k * n + j) * n + i; };
+// A PPE shaped like the solver's, in D = 2 or 3 dimensions: an n^D lattice (spacing 1)
+// of fluid rows with the kernel-Laplacian weights -2 w'(r)/r of every neighbour within
+// 2h = 2.4 (about 18 entries per row in 2D, 80 in 3D), three layers of wall rows below
+// them in the Adami form p_w - sum_f (w_wf / sum w) p_f (diagonal 1, the fluid rows'
+// diagonal ~ 40), and the top layer Dirichlet (eliminated, like free-surface rows).
+SparseMatrixR kernelPPE(int D, int n) {
+  const int L = 3, nz = n + L;  // last coordinate 0..L-1: walls
+  const int ny = D == 3 ? n : 1;
+  auto id = [&](int i, int j, int k) { return (k * ny + j) * n + i; };
   auto w = [](double q) {  // cubic spline shape and -2 w'(r)/r, h = 1.2
     q /= 1.2;
     return q < 1 ? 1 - 1.5 * q * q + 0.75 * q * q * q : q < 2 ? 0.25 * (2 - q) * (2 - q) * (2 - q) : 0.0;
@@ -219,8 +220,9 @@ SparseMatrixR ppeLike3D(int n) {
     const double dw = q < 1 ? -3 * q + 2.25 * q * q : q < 2 ? -0.75 * (2 - q) * (2 - q) : 0.0;
     return -2 * dw / 1.2 / r;
   };
-  return matrixOfRows(n * n * nz, [&](int r, auto add) {
-    const int i = r % n, j = (r / n) % n, k = r / (n * n);
+  const int reach = D == 3 ? 2 : 0;
+  return matrixOfRows(n * ny * nz, [&](int r, auto add) {
+    const int i = r % n, j = (r / n) % ny, k = r / (n * ny);
     const bool wall = k < L, top = k == nz - 1;
     if (top) {
       add(r, 1.0);
@@ -229,11 +231,11 @@ SparseMatrixR ppeLike3D(int n) {
     double diag = 0, wsum = 0;
     std::vector<std::pair<int, double>> off;
     for (int dk = -2; dk <= 2; ++dk)
-      for (int dj = -2; dj <= 2; ++dj)
+      for (int dj = -reach; dj <= reach; ++dj)
         for (int di = -2; di <= 2; ++di) {
           const double d = std::sqrt(double(di * di + dj * dj + dk * dk));
           const int ii = i + di, jj = j + dj, kk = k + dk;
-          if (d == 0 || d >= 2.4 || ii < 0 || jj < 0 || kk < 0 || ii >= n || jj >= n || kk >= nz) continue;
+          if (d == 0 || d >= 2.4 || ii < 0 || jj < 0 || kk < 0 || ii >= n || jj >= ny || kk >= nz) continue;
           const bool otherWall = kk < L;
           if (wall) {
             if (otherWall) continue;  // wall rows couple to fluid only
@@ -254,22 +256,22 @@ SparseMatrixR ppeLike3D(int n) {
   });
 }
 
-// Aggregation must coarsen a 3D PPE to a sparse hierarchy: with the symmetric strength
+// Aggregation must coarsen the PPE to a sparse hierarchy: with the symmetric strength
 // test no wall row was strongly coupled and the untruncated smoothed prolongator made
 // the coarse rows dense (operator complexity 5.2 on a 15k-row PPE of a 3D tank; 4.2 s
-// per solve at 80k rows against 0.44 s now, docs/performance.md).
-BOOST_AUTO_TEST_CASE(amg_coarsens_a_3d_ppe_cheaply_and_converges) {
-  const SparseMatrixR A = ppeLike3D(20);
-  BOOST_TEST_MESSAGE("3D PPE: " << A.rows() << " rows, " << A.nonZeros() << " entries");
+// per solve at 80k rows against 0.44 s now, docs/performance.md). In 2D the
+// untruncated prolongator made the second level a third of the finest's entries
+// (K&O 20k: a solve 1.4-1.6 times slower).
+void checkCoarsening(int D, int n, double maxComplexity) {
+  const SparseMatrixR A = kernelPPE(D, n);
+  BOOST_TEST_MESSAGE(D << "D PPE: " << A.rows() << " rows, " << A.nonZeros() << " entries");
   AggregationAMG amg;
   BOOST_REQUIRE(amg.setup(A));
   BOOST_TEST_MESSAGE("levels " << amg.levels() << ", operator complexity " << amg.operatorComplexity()
                                << ", coarsest " << amg.coarsestRows());
   BOOST_TEST(amg.levels() >= 2);
   BOOST_TEST(amg.coarsestDense());
-  // Measured: 1.08; without the truncation of P 1.21, with the symmetric strength test
-  // and no truncation 3.2 (the coarse levels then cost more than the fine one).
-  BOOST_TEST(amg.operatorComplexity() < 1.15);
+  BOOST_TEST(amg.operatorComplexity() < maxComplexity);
   const Eigen::VectorXd xe = exactX(A, 11), b = A * xe;
   auto s = make("solver BiCGSTAB; preconditioner AMG; tolerance 1e-8;");
   Eigen::VectorXd x = Eigen::VectorXd::Zero(A.rows());
@@ -279,6 +281,15 @@ BOOST_AUTO_TEST_CASE(amg_coarsens_a_3d_ppe_cheaply_and_converges) {
   BOOST_TEST(!r.usedFallback);
   BOOST_TEST(r.iterations <= 12);
 }
+
+// Measured: 1.08; without the truncation of P 1.21, with the symmetric strength test
+// and no truncation 3.2 (the coarse levels then cost more than the fine one).
+BOOST_AUTO_TEST_CASE(amg_coarsens_a_3d_ppe_cheaply_and_converges) { checkCoarsening(3, 20, 1.15); }
+
+// Measured: 1.123 and 7 iterations; without the truncation of P 1.149 (a lattice's
+// prolongator has few small entries; on the K&O 20k systems the coarse levels hold
+// 13 % of the finest's entries truncated, 40 % with the old symmetric test untruncated).
+BOOST_AUTO_TEST_CASE(amg_coarsens_a_2d_ppe_cheaply_and_converges) { checkCoarsening(2, 150, 1.135); }
 
 BOOST_AUTO_TEST_CASE(warm_start_from_the_solution_needs_no_iteration) {
   const SparseMatrixR A = ppeLike(30, 0.05, 0.01);
