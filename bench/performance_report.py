@@ -86,13 +86,12 @@ GROUPS = [("neighbours", ["neighbours"]), ("weights", ["weights"]), ("density", 
           ("other", ["functionObjects", "output"])]
 
 
-# The 3D memory measured by hand after the changes of 2026-12-04 (the threeD part was not rerun).
+# The 3D memory measured by hand on 2026-12-04, before the threeD part was rerun on 2026-12-05.
 THREE_D_MEMORY = ("measured 2026-12-04, same machine, results bit for bit the same at every stage: the 3D-100k "
                   "case (20 steps, 2 threads) 6.14 KB per particle before the day's first changes, 4.32 KB after "
-                  "them, 3554 B at the day's end (3474 B on one thread), when it also ran at 4.52 us per "
-                  "particle-step of all kinds on 2 threads (11.2 us per fluid particle-step, against 15.8 after the "
-                  "first changes; the table's rows are from 2026-12-02, another host); the 400k and 800k cases were "
-                  "not rerun")
+                  "them, 3554 B at the day's end (3474 B on one thread); the table (2026-12-05) has 100k and 800k "
+                  "under 4 KB and 400k above it (4.6 KB, not yet explained: 800k, with a larger share of fluid "
+                  "particles, 62 % against 55 %, needs 3.2 KB)")
 
 
 def write(csvPath, mdPath, quick):
@@ -112,14 +111,17 @@ def write(csvPath, mdPath, quick):
     add("the CPU-time columns are the better guide).")
     add("")
     add("The parts are rerun one at a time (`--only`), so their rows can come from different days and hosts:")
-    add("throughput, scaling, solvers and timestep were last run on 2026-12-04 (scaling last, after the search's")
-    add("equal-share scan), the others (threeD, pysph) on 2026-12-02. The host of 2026-12-04 runs the same code")
+    add("throughput, scaling, solvers, timestep and threeD were last run on 2026-12-05, after the AMG's 2D")
+    add("coarsening became the 3D one, pysph on 2026-12-02. The host of 2026-12-04 runs the same code")
     add("about 1.6 times slower per step than that of 2026-12-02 (K&O dx = 0.01, fixed dt, 2 threads, at the")
     add("commit before the changes of 2026-12-04: 1.67-1.69 us per particle-step in three runs, against 1.08 us on")
     add("2026-12-02), and its speed varies within the day (other machines share it): compare rows of one run")
     add("only. Before and after that day's changes, run alternately on a quiet moment of the same host (K&O")
     add("dx = 0.01, 100 steps of 1e-4 s, 2 threads, three runs each): 1.77-1.79 against 1.50-1.52 us per")
-    add("particle-step, the pressure solve 1.89-1.94 against 1.50-1.55 s, outputs byte for byte the same.")
+    add("particle-step, the pressure solve 1.89-1.94 against 1.50-1.55 s, outputs byte for byte the same. On")
+    add("2026-12-05, the same comparison between the end of 2026-12-04 and the AMG with one coarsening path")
+    add("(and the Taylor correction's gradient taken before ADS, which restores the validated results): 1.40-1.44")
+    add("against 1.17-1.18 us per particle-step, the pressure solve 1.39-1.44 against 0.91-0.92 s.")
     add("")
     add("Units: *us/particle-step* = wall time of the run divided by (steps x fluid particles), as printed by")
     add("`shizuku` at the end of a run; *CPU* = user+system time of all threads divided the same way.")
@@ -177,7 +179,8 @@ def write(csvPath, mdPath, quick):
             + f" | {'yes' if w <= 27 else 'no'} | maxCo 0.5 keeps the front error "
             "(9.90 against 10.04 %) but the interior density-error mode grows from -0.125 to -0.189 % and impact "
             "pressure loses its first peak (see 'How large a step'): the default stays 0.2. What a step costs: row 1 "
-            "(the PPE solve takes 9 iterations at maxCo 0.5, 5-7 at fixed 1e-4 s)"
+            "(an adaptive step costs about twice a throughput step: at maxCo 0.2 its PPE takes 9-11 iterations, "
+            "half of them 10 or more, against 6 in the first 0.01 s from rest at fixed 1e-4 s; 9 at maxCo 0.5)"
             + " (see 'Adaptive time step') |")
     s20 = find(rows, "scaling", "KO-20k")
     s320 = find(rows, "scaling", "KO-320k") or find(rows, "scaling", "KO-80k")
@@ -185,7 +188,7 @@ def write(csvPath, mdPath, quick):
         g = float(s320["usPerParticleStep"]) / float(s20["usPerParticleStep"])
         gc = float(s320["cpuUsPerParticleStep"]) / float(s20["cpuUsPerParticleStep"])
         add(f"| cost per particle-step grows < 1.5x from 20k to 320k | {f(g)}x wall, {f(gc)}x CPU "
-            f"({s320['case']}) | {'yes' if g < 1.5 else 'no'} | AMG iterations are flat (about 5); the other "
+            f"({s320['case']}) | {'yes' if g < 1.5 else 'no'} | AMG iterations are flat (about 6); the other "
             "stages are O(N); what grows is cache misses at large N |")
     if s320:
         bpp = 1024 * 1024 * float(s320["maxrssMB"]) / float(s320["total"])
@@ -205,9 +208,11 @@ def write(csvPath, mdPath, quick):
             "2733 / 2215 B with W_ij computed from |r_ij| where a pass uses it (its fill and refresh passes gone); "
             "2709 / 2178 B with the product's row cache in a direct-mapped table and the VTP writer lending VTK the "
             "fields; 2548 / 2026 B with the search's rows as 16-bit offsets into each cell's candidates, the AMG "
-            "levels rebuilt in place, the forces summed in u*'s storage and BiCGSTAB's s in r. Three runs of the "
+            "levels rebuilt in place, the forces summed in u*'s storage and BiCGSTAB's s in r; on 2026-12-05, with "
+            "the AMG's prolongator truncated in 2D too (coarse levels of 13 % of the finest's entries instead of "
+            "40 %), 2362 / 1842 B. Three runs of the "
             "320k case differ by 0.3 MB; the peak is reached at the step's end, while the VTP file is written. "
-            "Of the 2026 B, 57.5 MB for any case is the executable and its shared libraries (VTK, Trilinos, PETSc, "
+            "Of the 1842 B, 57.5 MB for any case is the executable and its shared libraries (VTK, Trilinos, PETSc, "
             "hypre): 0.18 KB a particle at 320k. The heap holds per pair (about 20) the SPH2 gradient (16 B) and "
             "Laplacian (8 B) weights, the index (4 B) and the search's per-thread copy (2 B and a quarter); per "
             "particle the PPE matrix (12 B an entry), the AMG hierarchy (P, R = P^T, coarse operators, two "
@@ -281,12 +286,13 @@ def write(csvPath, mdPath, quick):
         add("12.3-17.0 on two, against 12.2-12.6 and 8.5-8.8 with the row-wise test and truncation (6 iterations")
         add("instead of 5).")
         add("")
-        add("What holds 3D back (measured 2026-12-02 on these runs): the PPE solve is 42-71 % of a step and does")
-        add("not gain from a second thread (100k: 330 ms per solve on one, 379 on two: the hybrid Gauss-Seidel's")
-        add("block-Jacobi coupling across the two row blocks adds iterations, 8 -> 9.6, and the hierarchy's setup")
-        add("runs on one thread); its share grows with N (the iterations with it), which is most of the 2x growth")
-        add("from 100k to 800k. The neighbour search and the SPH2 weights (9x9 moment matrices) are the next")
-        add("18 % and 14 % on one thread. Memory: about 60 pairs per fluid particle, each with its index and")
+        add("What holds 3D back (measured 2026-12-05 on these runs): the PPE solve is 42-63 % of a step and gains")
+        add("little or nothing from a second thread (100k: 183 ms per solve on one, 207 on two: the hybrid")
+        add("Gauss-Seidel's block-Jacobi coupling across the two row blocks adds iterations, 7.9 -> 9.8, and the")
+        add("hierarchy's aggregation runs on one thread); its share grows with N (the iterations with it), which is")
+        add("most of the 1.6x growth from 100k to 800k. The neighbour search and the SPH2 weights (9x9 moment")
+        add("matrices) are the next")
+        add("14 % and 19 % on one thread at 100k. Memory: about 60 pairs per fluid particle, each with its index and")
         add("the SPH2 gradient and Laplacian weights (36 B; r_ij, its length and W are computed from the")
         add("positions where used since 2026-12-04: peak RSS per particle of the 115k-particle case 4292 B")
         add("before that day's memory changes, 3569 B after, bit for bit the same results), plus the PPE rows.")
@@ -472,13 +478,30 @@ def write(csvPath, mdPath, quick):
     add("  finest level's right-hand side and result are the Krylov vectors (no copies), the first sweep from")
     add("  zero stops each row at its diagonal, the smoother sums a row's runs before, in and after its thread's")
     add("  block without testing each column, prolongation is fused with the update, and the row-wise products")
-    add("  (residual, restriction, prolongation) split between threads by their entries, not their rows (the")
-    add("  restriction onto a 2.6k-row level ran on one thread). A setup (rebuilt every step: 44 against 34 ms")
-    add("  per solve on two threads) is about 20 ms; its Galerkin product now forms rows of A P where a row of R")
-    add("  needs them (no stored A P) and is 17 % slower on one thread. Not kept: the smoother's levels split")
+    add("  (residual, restriction, prolongation) split between threads by their entries, not their rows. With")
+    add("  the row-wise strength test and the truncated prolongator in 2D too (2026-12-05; the three-level")
+    add("  hierarchy 23018 -> 2600 -> 310 rows, operator complexity 1.13 instead of 1.40) a solve takes 12.2-12.6")
+    add("  ms on one thread and 8.5-8.8 on two, 6 iterations instead of 5. The systems of an adaptive run are")
+    add("  harder than those of the first 0.01 s from rest that the throughput rows time: at maxCo 0.2 (t = 0.15-0.2")
+    add("  s) 9.05 iterations and 18-21 ms a solve on two threads, so the PPE is half of an adaptive step")
+    add("  (ppeSolve 18.7 of 36.1 s to 0.5 s) and an adaptive step costs about twice a fixed-dt throughput step;")
+    add("  rebuilding the hierarchy every step takes 8.65 iterations there, so the kept hierarchy is not the cause,")
+    add("  and neither is the warm start: from zero the same systems take 10.05 iterations, from the linear")
+    add("  extrapolation 2 p^n - p^(n-1) 9.45 (the pressure of consecutive steps differs by its noise more than")
+    add("  by its trend). What makes them harder than the first steps' is the AMG's convergence on the flowing")
+    add("  dam break's matrix.")
+    add("  Measured, not adopted: prolongation smoothing omega 0.8 instead of 2/3 (4/3 over the spectral radius")
+    add("  of D^-1 A, which is nearer 1.5-1.8 than 2 here) gives 5 iterations instead of 6 at fixed dt (7.4-7.8")
+    add("  against 8.5-9.2 ms on two threads) and 8.5 instead of 9.05 on the adaptive systems (16.8 against 20.8")
+    add("  ms), but on the 3D-100k systems 5.75 instead of 8 iterations for no faster solve (189-215 against")
+    add("  185-273 ms on one thread, a noisy host); omega from a power-iteration estimate of that radius per")
+    add("  level (0.90 on the finest, 0.74 on the next) gave 6. A setup (rebuilt every step: 44 against 34 ms")
+    add("  per solve on two threads before the truncation) is about 20 ms. Not kept: the smoother's levels split")
     add("  between threads below 8192 rows (2048: another 7 % off the 2-thread solve, the same 5 iterations, but")
     add("  the block-Jacobi coupling changes the iterates); GMRES(10) with the same AMG (10 iterations against")
-    add("  BiCGSTAB's 5: the same number of V-cycles, and each iteration adds its Gram-Schmidt work).")
+    add("  BiCGSTAB's 5: the same number of V-cycles, and each iteration adds its Gram-Schmidt work). A solver")
+    add("  tolerance of 1e-6 instead of the paper's 1e-8 takes 4 iterations at fixed dt and 6.9 on the adaptive")
+    add("  systems; it is a change of the method, to be judged by its accuracy, and is not counted here.")
     add("- Single-precision AMG levels gave no gain at 20k, where the levels fit in cache, and were not kept.")
     add("- Measurements on a loaded shared machine inflate the 2-thread wall times; rerun")
     add("  `bench/run-performance` when `uptime` shows a load below 0.5, with the OpenMP policy users get.")
