@@ -7,7 +7,7 @@
 //     off-diagonal mass is below 0.1 |a_ii|); greedy aggregation (root + strong
 //     neighbours, then leftovers join the aggregate of their largest-coupled
 //     neighbour); tentative prolongation P0 = aggregate indicator; smoothed
-//     P = (I - omega D^-1 A) P0, omega = 2/3, each row truncated to its entries of
+//     P = (I - omega D^-1 A) P0, omega = 0.8, each row truncated to its entries of
 //     at least 0.2 of its largest and rescaled to its sum; restriction R = P^T; coarse
 //     A_c = R A P; recursively until <= 400 unknowns (dense LU there). If the
 //     aggregation stalls on a larger level (a flow broken into many small
