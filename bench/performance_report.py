@@ -180,8 +180,9 @@ def write(csvPath, mdPath, quick):
             + f" | {'yes' if w <= 27 else 'no'} | maxCo 0.5 keeps the front error "
             "(9.90 against 10.04 %) but the interior density-error mode grows from -0.125 to -0.189 % and impact "
             "pressure loses its first peak (see 'How large a step'): the default stays 0.2. What a step costs: row 1 "
-            "(an adaptive step costs about twice a throughput step: at maxCo 0.2 its PPE takes 9-11 iterations, "
-            "half of them 10 or more, against 6 in the first 0.01 s from rest at fixed 1e-4 s; 9 at maxCo 0.5)"
+            "(an adaptive step costs about twice a throughput step: at maxCo 0.2 its PPE took 9-11 iterations, "
+            "half of them 10 or more, with the AMG's omega 2/3, against 6 in the first 0.01 s from rest at fixed "
+            "1e-4 s; with omega 0.8 8.5 on the systems of t = 0.15-0.2 s against 5 from rest)"
             + " (see 'Adaptive time step') |")
     s20 = find(rows, "scaling", "KO-20k")
     s320 = find(rows, "scaling", "KO-320k") or find(rows, "scaling", "KO-80k")

@@ -34,7 +34,8 @@ class ParticleShifting {
   // position corrections (ADS) move particles, so that the Shepard weights W_wf are those
   // of r'. Nothing without a Taylor correction.
   void velocityGradient(FlowState<D>& s, StageTimers& timers);
-  // dr = cap(sum of the terms); r += dr; u += <grad u> dr where Taylor-corrected.
+  // dr = cap(sum of the terms); r += dr; u += <grad u> dr where Taylor-corrected, with
+  // the <grad u> of this step's velocityGradient.
   void apply(FlowState<D>& s, StageTimers& timers);
 
   const std::vector<std::unique_ptr<ShiftTerm<D>>>& terms() const { return terms_; }

@@ -70,6 +70,8 @@ class AggregationAMG final : public Preconditioner {
   std::vector<Level> levels_;
   std::vector<double> diag_;  // setup scratch: the diagonal of the level being built
   std::vector<int> agg_;      // setup scratch: its aggregates
+  std::vector<double> threshold_;  // setup scratch: each row's strong-coupling threshold
+  std::vector<int> firstAgg_;      // setup scratch: the aggregates before leftovers join
   int coarsestRows_ = 0;
   bool coarsestDense_ = true;
   Eigen::PartialPivLU<Eigen::MatrixXd> coarse_;                                // <= kCoarsest rows

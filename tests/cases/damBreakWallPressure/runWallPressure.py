@@ -20,13 +20,15 @@ P1 (TrixiParticles' set; the PySPH set agrees within its reading error):
 The method does not meet those bounds yet (README.md of the tutorial, "Against the
 experiment"): each is printed with its measured value as `issue 18 bound` and not asserted.
 What is asserted are the guards the resolution study supports (H/30, H/60; the wall row of
-docs/method.md 11 before 2026-12-02 fails the peak and noise guards):
-  - crossing within 6 % of 2.616 (measured -3.5, -4.0 %; old row +3.6, +0.4, +4.3 % at
-    H/30, H/60, H/120);
-  - filtered first peak at most 2 rho g H (1.41, 0.78; old row 7.2, 4.2, 6.6);
-  - plateau mean within 30 % of 0.538 (+18 % and +22 % at H/30 on 1 and 2 threads, -10 %
-    at H/60; old row +18, +15, +11 %);
-  - plateau noise at most 0.15 rho g H (0.078 at H/60; at H/30 0.087-0.114 over four
+docs/method.md 11 before 2026-12-02 fails the peak and noise guards; measured 2026-12-05,
+2 threads, at H/30 and H/60, and 2026-12-02 with the wall row before its stencil guards):
+  - crossing within 6 % of 2.616 (+1.6, +3.4 %; 2026-12-02 -3.5, -4.0 %; old row +3.6, +0.4,
+    +4.3 % at H/30, H/60, H/120);
+  - filtered first peak at most 2 rho g H (0.87, 0.46; 2026-12-02 1.41, 0.78; old row 7.2,
+    4.2, 6.6);
+  - plateau mean within 30 % of 0.538 (-3, -13 %; 2026-12-02 +18 % and +22 % at H/30 on 1
+    and 2 threads, -10 % at H/60; old row +18, +15, +11 %);
+  - plateau noise at most 0.15 rho g H (0.066 at H/60; at H/30 0.087-0.114 over four
     trajectories: 1 and 2 threads, solver tolerance 1e-8, 1e-9, 1e-10; old row 0.36, 0.24,
     0.30; with the Taylor correction's Shepard wall velocity taken after ADS instead of
     before it, 0.127-0.193 over the same four).
