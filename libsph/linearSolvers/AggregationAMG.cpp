@@ -44,13 +44,16 @@ constexpr double kOmega = 0.8;
 constexpr int kSweeps = 1;            // hybrid Gauss-Seidel sweeps before and after
 // Levels smaller than this run on one thread: a parallel region's fork and barrier
 // cost more than the work, and on a shared machine every barrier can wait for a
-// descheduled thread.
-constexpr int kParallelRows = 8192;
+// descheduled thread. Measured on the K&O 20k systems (2 threads, levels 23018 -> 2600
+// -> 310 rows; bench_pressure, three alternating runs): 8192 rows and 65536 entries
+// (the second level on one thread) 7.5-7.7 ms a solve, 2048 and 32768 6.6-6.9, 1024 and
+// 16384 6.6-7.0, 256 and 4096 6.7-7.0; the iterations are the same (5).
+constexpr int kParallelRows = 2048;
 // Row-wise products (residual, restriction, prolongation) go parallel by their
 // entries instead: their rows are independent, so the result is the same on any
 // number of threads, and a coarse level's restriction holds several times more
 // entries per row than the finest level's matrix.
-constexpr long kParallelEntries = 65536;
+constexpr long kParallelEntries = 32768;
 constexpr int kCoarsest = 400;    // dense LU at or below this size
 constexpr int kMaxLevels = 12;
 

@@ -19,7 +19,7 @@
 //     after the coarse correction. The finest level always uses the current
 //     matrix; the coarse levels are kept from the last setup (the matrix changes
 //     little from one step to the next).
-// Levels below 8192 rows run on one thread. The setup's products (P, R = P^T and
+// Levels below 2048 rows run on one thread. The setup's products (P, R = P^T and
 // A_c = R (A P), the last without storing A P) are SparseProducts' row-parallel ones,
 // equal to Eigen's bit for bit and built in place (the setup allocates its levels); a
 // cycle allocates nothing: the finest level's right-hand side and result are the
