@@ -18,6 +18,7 @@
 // Standard: tilde gradW = gradW, tilde lapW = 2 (r_ji . gradW)/r^2 = 2c (Morris/Brookshaw).
 // Reads no dictionary keys.
 #pragma once
+#include "core/OverwriteBuffer.hpp"
 #include "operators/DerivativeOperator.hpp"
 #include <algorithm>
 #include <cmath>
@@ -384,8 +385,8 @@ void computeRows(const NeighbourList<D>& nl, const std::vector<std::uint8_t>& co
   const std::size_t n = nl.numParticles(), np = nl.numPairs();
   if (!computeFor.empty() && computeFor.size() != n)
     throw std::invalid_argument("computeWeights: computeFor has the wrong size");
-  out.gradW.resize(np);
-  out.lapW.resize(np);
+  resizeForOverwrite(out.gradW, np);  // every pair's weights are written below
+  resizeForOverwrite(out.lapW, np);
   out.order.resize(n);
   const bool all = computeFor.empty();
 #pragma omp parallel for schedule(dynamic, 256)

@@ -23,6 +23,7 @@
 // the capacity has been reached. Rows are identical for any thread count.
 // Reads no dictionary keys (radius and box come from the caller).
 #include "particles/NeighbourList.hpp"
+#include "core/OverwriteBuffer.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -296,7 +297,7 @@ void NeighbourSearch<D>::Impl::copyRows(NeighbourList<D>& out, const std::vector
   constexpr bool offsets = !std::is_same_v<T, Index>;
   const Index n = Index(out.offset.size()) - 1;
   const Index* offset = out.offset.data();
-  out.j.resize(std::size_t(offset[n]));
+  resizeForOverwrite(out.j, std::size_t(offset[n]));  // every row is copied below
   Index* oj = out.j.data();
 #pragma omp parallel
   {
