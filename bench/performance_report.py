@@ -89,9 +89,13 @@ GROUPS = [("neighbours", ["neighbours"]), ("weights", ["weights"]), ("density", 
 # The 3D memory measured by hand on 2026-12-04, before the threeD part was rerun on 2026-12-05.
 THREE_D_MEMORY = ("measured 2026-12-04, same machine, results bit for bit the same at every stage: the 3D-100k "
                   "case (20 steps, 2 threads) 6.14 KB per particle before the day's first changes, 4.32 KB after "
-                  "them, 3554 B at the day's end (3474 B on one thread); the table (2026-12-05) has 100k and 800k "
-                  "under 4 KB and 400k above it (4.6 KB, not yet explained: 800k, with a larger share of fluid "
-                  "particles, 62 % against 55 %, needs 3.2 KB)")
+                  "them, 3554 B at the day's end (3474 B on one thread); 400k stood above the rest at 4.6 KB "
+                  "until 2026-12-05: heaptrack showed its pair count outgrowing the SPH2 gradient weights' "
+                  "capacity in the first steps, and std::vector's doubling held the old 0.49 GB and the new "
+                  "0.97 GB at once; the per-pair buffers now free their old storage first and keep a quarter of "
+                  "headroom (core/OverwriteBuffer.hpp): 1.85 -> 1.30 GB peak RSS, 4.55 -> 3.21 KB a particle, "
+                  "output byte for byte the same (800k, whose pair count stayed within the doubled capacity "
+                  "in its 6 steps, was not affected)")
 
 
 def write(csvPath, mdPath, quick):
@@ -288,13 +292,14 @@ def write(csvPath, mdPath, quick):
         add("12.3-17.0 on two, against 12.2-12.6 and 8.5-8.8 with the row-wise test and truncation (6 iterations")
         add("instead of 5).")
         add("")
-        add("What holds 3D back (measured 2026-12-05 on these runs, a loaded host: load 1.5-1.8): the PPE solve is")
-        add("38-53 % of a step and gains little from a second thread (100k: 213 ms per solve on one, 234 on two:")
-        add("the hybrid Gauss-Seidel's block-Jacobi coupling across the two row blocks adds iterations, 5.8 -> 7.2,")
-        add("and the hierarchy's aggregation runs on one thread); its share grows with N (the iterations with it),")
-        add("which is most of the growth from 100k to 800k. The neighbour search and the SPH2 weights (9x9 moment")
-        add("matrices) are the next")
-        add("16 % and 20 % on one thread at 100k. Memory: about 60 pairs per fluid particle, each with its index and")
+        add("What holds 3D back (measured 2026-12-05 on these runs, load 1.4-1.8; the host's speed varied that day:")
+        add("the 3D-100k case on two threads took 8.2 to 10.6 s in four runs of the same build, so single rows")
+        add("compare only roughly with the previous day's): the PPE solve is 33-59 % of a step and gains little")
+        add("from a second thread (100k: 216 ms per solve on one, 251 on two: the hybrid Gauss-Seidel's")
+        add("block-Jacobi coupling across the two row blocks adds iterations, 5.8 -> 7.2, and the hierarchy's")
+        add("aggregation runs on one thread); its share grows with N (the iterations with it), which is most of")
+        add("the growth from 100k to 800k. The neighbour search and the SPH2 weights (9x9 moment matrices) are")
+        add("the next 16 % and 22 % on one thread at 100k. Memory: about 60 pairs per fluid particle, each with its index and")
         add("the SPH2 gradient and Laplacian weights (36 B; r_ij, its length and W are computed from the")
         add("positions where used since 2026-12-04: peak RSS per particle of the 115k-particle case 4292 B")
         add("before that day's memory changes, 3569 B after, bit for bit the same results), plus the PPE rows.")
