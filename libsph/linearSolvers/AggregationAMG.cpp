@@ -1,5 +1,6 @@
 // Smoothed-aggregation AMG preconditioner (see AggregationAMG.hpp for the method).
 #include "linearSolvers/AggregationAMG.hpp"
+#include "linearSolvers/HybridGaussSeidel.hpp"
 #include "linearSolvers/SparseProducts.hpp"
 #include "core/Log.hpp"
 #include "core/types.hpp"
@@ -248,62 +249,7 @@ void AggregationAMG::build(const SparseMatrixR& A) {
 
 void AggregationAMG::smooth(int l, const SparseMatrixR& A, const double* b, double* x, bool forward) const {
   const Level& L = levels_[l];
-  const int n = int(A.rows());
-  const int* outer = A.outerIndexPtr();
-  const int* col = A.innerIndexPtr();
-  const double* val = A.valuePtr();
-  double* old = L.old.data();
-  const double* inv = L.invDiag.data();
-#pragma omp parallel if (n > kParallelRows)
-  {
-    const int T = omp_get_num_threads(), t = omp_get_thread_num();
-    const int lo = int(long(n) * t / T), hi = int(long(n) * (t + 1) / T);
-    for (int i = lo; i < hi; ++i) old[i] = x[i];
-#pragma omp barrier
-    // Columns ascend, so a row's entries are those before the block (old values),
-    // in it (current values, the diagonal skipped) and after it (old values): three
-    // runs summed in column order, without a test of each column against the block.
-    auto row = [&](int i) {
-      double s = b[i];
-      int p = outer[i];
-      const int e = outer[i + 1];
-      for (; p < e && col[p] < lo; ++p) s -= val[p] * old[col[p]];
-      for (; p < e && col[p] < hi; ++p)
-        if (col[p] != i) s -= val[p] * x[col[p]];
-      for (; p < e; ++p) s -= val[p] * old[col[p]];
-      x[i] = s * inv[i];
-    };
-    if (forward)
-      for (int i = lo; i < hi; ++i) row(i);
-    else
-      for (int i = hi - 1; i >= lo; --i) row(i);
-  }
-}
-
-// The first forward sweep from x = 0: every term with a column at or after the
-// diagonal, or outside the thread's block, multiplies a zero, so each row stops at its
-// diagonal (columns ascend) and neither the zeroing of x nor the copy of the old values
-// is needed; the same values as smooth(l, A, true) on x = 0.
-void AggregationAMG::smoothFromZero(int l, const SparseMatrixR& A, const double* b, double* x) const {
-  const Level& L = levels_[l];
-  const int n = int(A.rows());
-  const int* outer = A.outerIndexPtr();
-  const int* col = A.innerIndexPtr();
-  const double* val = A.valuePtr();
-  const double* inv = L.invDiag.data();
-#pragma omp parallel if (n > kParallelRows)
-  {
-    const int T = omp_get_num_threads(), t = omp_get_thread_num();
-    const int lo = int(long(n) * t / T), hi = int(long(n) * (t + 1) / T);
-    for (int i = lo; i < hi; ++i) {
-      double s = b[i];
-      int p = outer[i];
-      const int e = outer[i + 1];
-      while (p < e && col[p] < lo) ++p;
-      for (; p < e && col[p] < i; ++p) s -= val[p] * x[col[p]];
-      x[i] = s * inv[i];
-    }
-  }
+  hybridGaussSeidel::sweep(A, L.invDiag.data(), b, x, L.old.data(), forward, A.rows() > kParallelRows);
 }
 
 void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, double* xp) const {
@@ -317,7 +263,8 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
     return;
   }
   double* x = xp;
-  smoothFromZero(l, A, bp, x);
+  const bool parallel = n > kParallelRows;
+  hybridGaussSeidel::sweepFromZero(A, L.invDiag.data(), bp, x, parallel);
   for (int k = 1; k < kSweeps; ++k) smooth(l, A, bp, x, true);
   // r = b - A x, restricted.
   {

@@ -15,8 +15,8 @@
 //     LU instead: a dense one would need 8 n^2 bytes and n^3 operations.
 //     Rows with no off-diagonal entry (p = 0 rows) are left out of the coarse grids.
 //   cycle: one hybrid Gauss-Seidel sweep (Gauss-Seidel inside each thread's
-//     contiguous row block, Jacobi across blocks) forward before and backward
-//     after the coarse correction. The finest level always uses the current
+//     contiguous row block, Jacobi across blocks; HybridGaussSeidel.hpp) forward before
+//     and backward after the coarse correction. The finest level always uses the current
 //     matrix; the coarse levels are kept from the last setup (the matrix changes
 //     little from one step to the next).
 // Levels below 2048 rows run on one thread. The setup's products (P, R = P^T and
@@ -60,7 +60,6 @@ class AggregationAMG final : public Preconditioner {
   // One V-cycle from level l down: x = (approximately) A^-1 b.
   void cycle(int l, const SparseMatrixR& A, const double* b, double* x) const;
   void smooth(int l, const SparseMatrixR& A, const double* b, double* x, bool forward) const;
-  void smoothFromZero(int l, const SparseMatrixR& A, const double* b, double* x) const;
 
   int reuse_;
   bool stale_ = true;

@@ -115,6 +115,12 @@ MUTATIONS = [
              [r"^unit\.test_core_overwriteBuffer$"],
              "a per-pair buffer grows by std::vector's doubling, holding its old and new storage at once "
              "(the 3D 400k case's peak memory: 4.55 instead of 3.21 KB per particle)"),
+    Mutation("smootherFromZeroReadsOtherBlocks", "libsph/linearSolvers/HybridGaussSeidel.cpp",
+             "      while (p < e && col[p] < lo) ++p;\n",
+             "",
+             [r"^unit\.test_linearSolvers_hybridGaussSeidel$"],
+             "the AMG's first sweep from zero reads the entries of the blocks before the thread's own, "
+             "whose x other threads may not have written yet"),
     Mutation("pressureGradientSign", "libsph/operators/Ops.cpp",
              "  sumOverNeighbours(nl, &rows, scale, true, out,\n"
              "                    [&](long i, Index k) -> Vec<D> { return (f[nl.j[k]] - f[i]) * pw.gradW[k]; });",
