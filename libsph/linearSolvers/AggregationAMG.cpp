@@ -247,11 +247,6 @@ void AggregationAMG::build(const SparseMatrixR& A) {
   }
 }
 
-void AggregationAMG::smooth(int l, const SparseMatrixR& A, const double* b, double* x, bool forward) const {
-  const Level& L = levels_[l];
-  hybridGaussSeidel::sweep(A, L.invDiag.data(), b, x, L.old.data(), forward, A.rows() > kParallelRows);
-}
-
 void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, double* xp) const {
   const Level& L = levels_[l];
   const int n = int(A.rows());
@@ -265,7 +260,8 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
   double* x = xp;
   const bool parallel = n > kParallelRows;
   hybridGaussSeidel::sweepFromZero(A, L.invDiag.data(), bp, x, parallel);
-  for (int k = 1; k < kSweeps; ++k) smooth(l, A, bp, x, true);
+  for (int k = 1; k < kSweeps; ++k)
+    hybridGaussSeidel::sweep(A, L.invDiag.data(), bp, x, L.old.data(), true, parallel);
   // r = b - A x, restricted.
   {
     const int* outer = A.outerIndexPtr();
@@ -296,7 +292,8 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
       x[i] += s;
     }
   }
-  for (int k = 0; k < kSweeps; ++k) smooth(l, A, bp, x, false);
+  for (int k = 0; k < kSweeps; ++k)
+    hybridGaussSeidel::sweep(A, L.invDiag.data(), bp, x, L.old.data(), false, parallel);
 }
 
 void AggregationAMG::apply(const double* r, double* z) const { cycle(0, *fine_, r, z); }

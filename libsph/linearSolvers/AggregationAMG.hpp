@@ -59,7 +59,6 @@ class AggregationAMG final : public Preconditioner {
   void build(const SparseMatrixR& A);
   // One V-cycle from level l down: x = (approximately) A^-1 b.
   void cycle(int l, const SparseMatrixR& A, const double* b, double* x) const;
-  void smooth(int l, const SparseMatrixR& A, const double* b, double* x, bool forward) const;
 
   int reuse_;
   bool stale_ = true;

@@ -40,6 +40,7 @@ Prints the numbers; the last line is `N passed, M failed`."""
 import os
 import re
 import sys
+from collections import namedtuple
 from concurrent.futures import ThreadPoolExecutor
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
@@ -64,6 +65,11 @@ def pressure_noise(t, p, t0, t1, last_may_fail=False):
     smooth = np.convolve(p, np.ones(w) / w, mode="same")
     m = (t >= t0 + 0.05) & (t <= t1 - 0.05)
     return float(np.sqrt(np.mean((p[m] - smooth[m]) ** 2)))
+
+
+# One solver run: exit status, case folder, its densityError (t, mean, mode), the time of
+# its last sample, and (t, p) of the centre probe or None.
+Run = namedtuple("Run", "rc case density end probe")
 
 
 def set_tolerance(path, tol):
@@ -101,6 +107,8 @@ def main():
     p.add_argument("--densityBound", type=float, default=None,
                    help="largest time-averaged interior |mean| and |mode| of the proposed run, percent")
     a = p.parse_args()
+    if a.trajectories and a.measure != "density":
+        p.error("--trajectories averages the density measure only")
     import numpy as np
     cm = st.load_compare(a.compare)
     tols = a.trajectories or [None]
@@ -118,40 +126,39 @@ def main():
     threads = a.threads if a.trajectories is None else 1
     with ThreadPoolExecutor(max_workers=1 if a.trajectories is None else 2) as pool:
         codes = list(pool.map(lambda job: st.run_solver(a.shizuku, job[2], threads), jobs))
-    runs = {}  # (tolerance, method) -> (exit status, (t, mean, mode), end time, probe)
+    runs = {}  # (tolerance, method) -> Run
     for (tol, k, case), rc in zip(jobs, codes):
         cols = cm.Series(case).columns
-        probe = cols["centre/p/point0"] if a.measure == "pressureNoise" else None
         t, mean = cols["densityError/densityError.dat/mean"]
-        series = (t, mean, cols["densityError/densityError.dat/mode"][1])
-        end = float(t[-1]) if len(t) else 0.0
-        runs[(tol, k)] = (rc, series, end, probe)
+        run = Run(rc, case, (t, mean, cols["densityError/densityError.dat/mode"][1]),
+                  float(t[-1]) if len(t) else 0.0,
+                  cols["centre/p/point0"] if a.measure == "pressureNoise" else None)
+        runs[(tol, k)] = run
         what = k if tol is None else f"{k} (tolerance {tol})"
-        print(f"     {what}: exit status {rc}, last densityError sample at t = {end:.4g} s ({case})")
+        print(f"     {what}: exit status {rc}, last densityError sample at t = {run.end:.4g} s ({case})")
         # A baseline expected to break down may end on the failing sample.
         last = -1 if (k == "baseline" and a.baselineBreaksDown) else None
-        finite = len(t) > 0 and all(bool(np.all(np.isfinite(v[:last]))) for v in series[1:])
-        if probe is not None:
-            pt, pv = probe
-            finite = finite and len(pt) > 0 and bool(np.all(np.isfinite(pv[:last])))
+        finite = len(t) > 0 and all(bool(np.all(np.isfinite(v[:last]))) for v in run.density[1:])
+        if run.probe is not None:
+            finite = finite and len(run.probe[0]) > 0 and bool(np.all(np.isfinite(run.probe[1][:last])))
         st.check(finite, f"{a.name}: the {what} run's interior density error"
-                 + (" and centre pressure are" if probe is not None else " is") + " finite at every sample")
+                 + (" and centre pressure are" if run.probe is not None else " is") + " finite at every sample")
     for tol in tols:
-        p, b = runs[(tol, "proposed")], runs[(tol, "baseline")]
+        prop, base = runs[(tol, "proposed")], runs[(tol, "baseline")]
         which = "" if tol is None else f" (tolerance {tol})"
-        st.check(p[0] == 0 and p[2] >= float(a.endTime) * (1 - 1e-6),
-                 f"{a.name}: the proposed method runs to endTime {a.endTime}{which} (exit status {p[0]})")
-        st.check(p[2] >= b[2], f"{a.name}: the proposed method stays stable at least as long as the baseline"
-                 f"{which} (to t = {p[2]:.4g} s against {b[2]:.4g} s)")
+        st.check(prop.rc == 0 and prop.end >= float(a.endTime) * (1 - 1e-6),
+                 f"{a.name}: the proposed method runs to endTime {a.endTime}{which} (exit status {prop.rc})")
+        st.check(prop.end >= base.end, f"{a.name}: the proposed method stays stable at least as long as the baseline"
+                 f"{which} (to t = {prop.end:.4g} s against {base.end:.4g} s)")
         if a.baselineBreaksDown:
-            case = next(c for (tl, k, c) in jobs if tl == tol and k == "baseline")
-            when = breakdown_time(os.path.join(case, "log.shizuku"))
-            st.check(b[0] == 2 and when is not None and when < float(a.endTime),
+            when = breakdown_time(os.path.join(base.case, "log.shizuku"))
+            st.check(base.rc == 2 and when is not None and when < float(a.endTime),
                      f"{a.name}: the baseline breaks down before endTime {a.endTime}{which} (exit status "
-                     f"{b[0]}, last good state at t = {when})")
-    end = {k: min(runs[(tol, k)][2] for tol in tols) for k in ("proposed", "baseline")}
-    series = {k: [runs[(tol, k)][1] for tol in tols] for k in ("proposed", "baseline")}
-    probe = {k: runs[(tols[0], k)][3] for k in ("proposed", "baseline") if runs[(tols[0], k)][3] is not None}
+                     f"{base.rc}, last good state at t = {when})")
+    methods = ("proposed", "baseline")
+    end = {k: min(runs[(tol, k)].end for tol in tols) for k in methods}
+    series = {k: [runs[(tol, k)].density for tol in tols] for k in methods}
+    probe = {k: runs[(tols[0], k)].probe for k in methods if runs[(tols[0], k)].probe is not None}
     t0, t1 = a.window[0], min(a.window[1], end["baseline"])
     # A baseline expected to break down is compared over the part it ran, at least 1 s (ten
     # widths of the 0.1 s moving average); otherwise over at least half the window.
