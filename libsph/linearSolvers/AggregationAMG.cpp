@@ -42,7 +42,7 @@ constexpr double kTruncation = 0.2;
 // 0.9 takes 12 on the flowing dam break, and omega from a power-iteration estimate of rho
 // per level (0.90, 0.74) 6 from rest.
 constexpr double kOmega = 0.8;
-constexpr int kSweeps = 1;            // hybrid Gauss-Seidel sweeps before and after
+constexpr int kSweeps = 1;            // Gauss-Seidel sweeps before and after
 // Levels smaller than this run on one thread: a parallel region's fork and barrier
 // cost more than the work, and on a shared machine every barrier can wait for a
 // descheduled thread. Measured on the K&O 20k systems (2 threads, levels 23018 -> 2600
@@ -166,7 +166,7 @@ void spmv(const SparseMatrixR& M, const double* x, double* y) {
 }  // namespace
 
 std::string AggregationAMG::describe() const {
-  return cat("AMG (smoothed aggregation, hybrid Gauss-Seidel V-cycle", reuse_ > 1 ? cat(", hierarchy kept up to ", reuse_, " steps") : "",
+  return cat("AMG (smoothed aggregation, Gauss-Seidel V-cycle with the rows coupling threads' blocks last", reuse_ > 1 ? cat(", hierarchy kept up to ", reuse_, " steps") : "",
              ")");
 }
 
@@ -194,9 +194,16 @@ bool AggregationAMG::setup(const SparseMatrixR& A) {
   } else {
     ++sinceSetup_;
   }
-  // The finest level smooths with this step's matrix.
+  // The finest level smooths with this step's matrix; every level split between the threads
+  // finds its interface rows for this solve's thread count.
   Level& L0 = levels_[0];
   const bool ok = invertDiagonal(A, L0.invDiag.data(), 0.0);
+  threads_ = std::max(1, omp_get_max_threads());
+  for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
+    const SparseMatrixR& M = l == 0 ? A : levels_[l].A;
+    levels_[l].threads = M.rows() > kParallelRows ? threads_ : 1;
+    hybridGaussSeidel::interfaceRows(M, levels_[l].threads, levels_[l].interface);
+  }
   return ok;
 }
 
@@ -215,7 +222,7 @@ void AggregationAMG::build(const SparseMatrixR& A) {
     for (int i = 0; i < n; ++i) L.invDiag[i] = diag_[i] != 0 ? 1.0 / diag_[i] : 0.0;
     // Level 0's right-hand side and solution are the caller's vectors (apply).
     for (auto* v : {&L.x, &L.b}) v->assign(l == 0 ? 0 : n, 0.0);
-    for (auto* v : {&L.r, &L.old}) v->assign(n, 0.0);
+    L.r.assign(n, 0.0);
     const int nc = (n <= kCoarsest || l + 1 >= kMaxLevels) ? 0 : aggregate(*cur, diag_, agg_, threshold_, firstAgg_);
     if (nc == 0 || nc > 0.9 * n) {
       // Coarsest level, solved exactly (rows left out of aggregation are identity-like
@@ -258,10 +265,9 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
     return;
   }
   double* x = xp;
-  const bool parallel = n > kParallelRows;
-  hybridGaussSeidel::sweepFromZero(A, L.invDiag.data(), bp, x, parallel);
+  hybridGaussSeidel::sweepFromZero(A, L.invDiag.data(), bp, x, L.interface, L.threads);
   for (int k = 1; k < kSweeps; ++k)
-    hybridGaussSeidel::sweep(A, L.invDiag.data(), bp, x, L.old.data(), true, parallel);
+    hybridGaussSeidel::sweep(A, L.invDiag.data(), bp, x, L.interface, L.threads, true);
   // r = b - A x, restricted.
   {
     const int* outer = A.outerIndexPtr();
@@ -293,7 +299,7 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
     }
   }
   for (int k = 0; k < kSweeps; ++k)
-    hybridGaussSeidel::sweep(A, L.invDiag.data(), bp, x, L.old.data(), false, parallel);
+    hybridGaussSeidel::sweep(A, L.invDiag.data(), bp, x, L.interface, L.threads, false);
 }
 
 void AggregationAMG::apply(const double* r, double* z) const { cycle(0, *fine_, r, z); }

@@ -14,9 +14,9 @@
 //     clusters: a dispersed splash), that level is the coarsest and gets a sparse
 //     LU instead: a dense one would need 8 n^2 bytes and n^3 operations.
 //     Rows with no off-diagonal entry (p = 0 rows) are left out of the coarse grids.
-//   cycle: one hybrid Gauss-Seidel sweep (Gauss-Seidel inside each thread's
-//     contiguous row block, Jacobi across blocks; HybridGaussSeidel.hpp) forward before
-//     and backward after the coarse correction. The finest level always uses the current
+//   cycle: one Gauss-Seidel sweep forward before and backward after the coarse
+//     correction, split between the threads by row blocks with the rows that couple
+//     blocks visited last (HybridGaussSeidel.hpp). The finest level always uses the current
 //     matrix; the coarse levels are kept from the last setup (the matrix changes
 //     little from one step to the next).
 // Levels below 2048 rows run on one thread. The setup's products (P, R = P^T and
@@ -54,7 +54,9 @@ class AggregationAMG final : public Preconditioner {
     SparseMatrixR A;                   // coarse levels: R A P (level 0: unused, see fine_)
     SparseMatrixR P, R;                // to / from the next coarser level
     std::vector<double> invDiag;
-    mutable std::vector<double> x, b, r, old;  // x, b: levels below the finest
+    mutable std::vector<double> x, b, r;  // x, b: levels below the finest
+    std::vector<int> interface;  // rows the smoother visits after the blocks' interiors
+    int threads = 1;             // threads the smoother splits the level between
   };
   void build(const SparseMatrixR& A);
   // One V-cycle from level l down: x = (approximately) A^-1 b.
@@ -62,7 +64,7 @@ class AggregationAMG final : public Preconditioner {
 
   int reuse_;
   bool stale_ = true;
-  int n_ = 0, sinceSetup_ = 0, setupIterations_ = 0;
+  int n_ = 0, sinceSetup_ = 0, setupIterations_ = 0, threads_ = 1;
   long setups_ = 0;
   const SparseMatrixR* fine_ = nullptr;  // this step's matrix (alive during the solve)
   std::vector<Level> levels_;

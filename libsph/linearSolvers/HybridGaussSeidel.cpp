@@ -1,4 +1,5 @@
-// Hybrid Gauss-Seidel sweeps of the AMG smoother (see HybridGaussSeidel.hpp).
+// Gauss-Seidel sweeps of the AMG smoother, interior rows by block in parallel and interface
+// rows after them (see HybridGaussSeidel.hpp).
 #include "linearSolvers/HybridGaussSeidel.hpp"
 #include <omp.h>
 
@@ -6,64 +7,104 @@ namespace shizuku {
 namespace hybridGaussSeidel {
 
 namespace {
-// Runs block(lo, hi) on every thread's row block (one block of all rows unless parallel);
-// block may hold barriers.
+
+struct Rows {
+  const int* outer;
+  const int* col;
+  const double* val;
+  explicit Rows(const SparseMatrixR& A) : outer(A.outerIndexPtr()), col(A.innerIndexPtr()), val(A.valuePtr()) {}
+  // Every entry of row i in [lo, hi) (columns ascend: its first and last decide).
+  bool interior(int i, int lo, int hi) const {
+    const int b = outer[i], e = outer[i + 1];
+    return b == e || (col[b] >= lo && col[e - 1] < hi);
+  }
+  // x_i from every other entry of the row at x's current values.
+  void solve(int i, const double* inv, const double* b, double* x) const {
+    double s = b[i];
+    for (int p = outer[i]; p < outer[i + 1]; ++p)
+      if (col[p] != i) s -= val[p] * x[col[p]];
+    x[i] = s * inv[i];
+  }
+  // x_i from the entries before the diagonal only (the rest multiply zeros).
+  void solveFromZero(int i, const double* inv, const double* b, double* x) const {
+    double s = b[i];
+    for (int p = outer[i]; p < outer[i + 1] && col[p] < i; ++p) s -= val[p] * x[col[p]];
+    x[i] = s * inv[i];
+  }
+};
+
+// Runs rows(lo, hi) on every thread's block, the blocks in parallel.
 template <class Block>
-void inBlocks(int n, bool parallel, Block&& block) {
-#pragma omp parallel if (parallel)
+void inBlocks(int n, int threads, Block&& block) {
+#pragma omp parallel num_threads(threads)
   {
     int lo, hi;
     rowBlock(n, omp_get_thread_num(), omp_get_num_threads(), lo, hi);
     block(lo, hi);
   }
 }
+
 }  // namespace
 
-void sweep(const SparseMatrixR& A, const double* inv, const double* b, double* x, double* old, bool forward,
-           bool parallel) {
-  const int* outer = A.outerIndexPtr();
-  const int* col = A.innerIndexPtr();
-  const double* val = A.valuePtr();
-  inBlocks(int(A.rows()), parallel, [&](int lo, int hi) {
-    for (int i = lo; i < hi; ++i) old[i] = x[i];
-#pragma omp barrier
-    // Columns ascend, so a row's entries are those before the block (old values),
-    // in it (current values, the diagonal skipped) and after it (old values): three
-    // runs summed in column order, without a test of each column against the block.
-    auto row = [&](int i) {
-      double s = b[i];
-      int p = outer[i];
-      const int e = outer[i + 1];
-      for (; p < e && col[p] < lo; ++p) s -= val[p] * old[col[p]];
-      for (; p < e && col[p] < hi; ++p)
-        if (col[p] != i) s -= val[p] * x[col[p]];
-      for (; p < e; ++p) s -= val[p] * old[col[p]];
-      x[i] = s * inv[i];
-    };
-    if (forward)
-      for (int i = lo; i < hi; ++i) row(i);
-    else
-      for (int i = hi - 1; i >= lo; --i) row(i);
-  });
+void interfaceRows(const SparseMatrixR& A, int threads, std::vector<int>& rows) {
+  rows.clear();
+  if (threads <= 1) return;
+  const Rows R(A);
+  const int n = int(A.rows());
+  for (int t = 0; t < threads; ++t) {
+    int lo, hi;
+    rowBlock(n, t, threads, lo, hi);
+    for (int i = lo; i < hi; ++i)
+      if (!R.interior(i, lo, hi)) rows.push_back(i);
+  }
 }
 
-// Every term with a column at or after the diagonal, or outside the thread's block,
-// multiplies a zero, so each row stops at its diagonal and neither the zeroing of x nor
-// the copy of the old values is needed.
-void sweepFromZero(const SparseMatrixR& A, const double* inv, const double* b, double* x, bool parallel) {
-  const int* outer = A.outerIndexPtr();
-  const int* col = A.innerIndexPtr();
-  const double* val = A.valuePtr();
-  inBlocks(int(A.rows()), parallel, [&](int lo, int hi) {
-    for (int i = lo; i < hi; ++i) {
-      double s = b[i];
-      int p = outer[i];
-      const int e = outer[i + 1];
-      while (p < e && col[p] < lo) ++p;
-      for (; p < e && col[p] < i; ++p) s -= val[p] * x[col[p]];
-      x[i] = s * inv[i];
+void sweep(const SparseMatrixR& A, const double* inv, const double* b, double* x, const std::vector<int>& interface,
+           int threads, bool forward) {
+  const Rows R(A);
+  const int n = int(A.rows());
+  if (threads <= 1) {
+    if (forward)
+      for (int i = 0; i < n; ++i) R.solve(i, inv, b, x);
+    else
+      for (int i = n - 1; i >= 0; --i) R.solve(i, inv, b, x);
+    return;
+  }
+  auto interiors = [&](int lo, int hi) {
+    if (forward) {
+      for (int i = lo; i < hi; ++i)
+        if (R.interior(i, lo, hi)) R.solve(i, inv, b, x);
+    } else {
+      for (int i = hi - 1; i >= lo; --i)
+        if (R.interior(i, lo, hi)) R.solve(i, inv, b, x);
     }
+  };
+  if (forward) {
+    inBlocks(n, threads, interiors);
+    for (const int i : interface) R.solve(i, inv, b, x);
+  } else {
+    for (auto it = interface.rbegin(); it != interface.rend(); ++it) R.solve(*it, inv, b, x);
+    inBlocks(n, threads, interiors);
+  }
+}
+
+// An interior row reads only its block: its entries before the diagonal are interior rows
+// already solved or interface rows, which are zeroed first; the interface rows then read
+// every value, the later interface rows' still zero.
+void sweepFromZero(const SparseMatrixR& A, const double* inv, const double* b, double* x,
+                   const std::vector<int>& interface, int threads) {
+  const Rows R(A);
+  const int n = int(A.rows());
+  if (threads <= 1) {
+    for (int i = 0; i < n; ++i) R.solveFromZero(i, inv, b, x);
+    return;
+  }
+  for (const int i : interface) x[i] = 0;
+  inBlocks(n, threads, [&](int lo, int hi) {
+    for (int i = lo; i < hi; ++i)
+      if (R.interior(i, lo, hi)) R.solveFromZero(i, inv, b, x);
   });
+  for (const int i : interface) R.solve(i, inv, b, x);
 }
 
 }  // namespace hybridGaussSeidel

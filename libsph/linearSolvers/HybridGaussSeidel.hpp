@@ -1,11 +1,20 @@
-// The AMG's smoother (docs/method.md 4.2): hybrid Gauss-Seidel over the rows of a sparse
-// matrix, Gauss-Seidel inside each OpenMP thread's contiguous row block [lo, hi) and Jacobi
-// across blocks (entries of other blocks read the values from before the sweep). With one
-// thread, or `parallel` false, it is plain Gauss-Seidel. Matrices are compressed row-major
-// with ascending columns; inv holds 1 / a_ii (0 where a_ii = 0: the row keeps x_i = 0).
-// No allocation; reads no dictionary keys.
+// The AMG's smoother (docs/method.md 4.2): Gauss-Seidel sweeps over the rows of a sparse
+// matrix, split between OpenMP threads without giving up Gauss-Seidel's coupling. The n rows
+// are cut into one contiguous block per thread. A row whose entries all lie inside its own
+// block is an interior row; the others (whose entries reach another block) are interface
+// rows. A forward sweep visits every block's interior rows in ascending order, the blocks
+// in parallel (no interior row reads another block), and then the interface rows in
+// ascending order on one thread; a backward sweep is the exact reverse. Either is plain
+// Gauss-Seidel in that row order, whatever the thread count: no value of another block is
+// read out of date. (A block-Jacobi split, which reads other blocks' values from before the
+// sweep, took 7.25 BiCGSTAB iterations instead of 5.75 on the 3D 100k dam break's systems
+// on two threads.) With one thread, or `threads` 1, it is Gauss-Seidel in the rows' own
+// order. Matrices are compressed row-major with ascending columns; inv holds 1 / a_ii (0
+// where a_ii = 0: the row gets x_i = 0). No allocation but interfaceRows growing its list;
+// reads no dictionary keys.
 #pragma once
 #include "linearSolvers/Preconditioner.hpp"
+#include <vector>
 
 namespace shizuku {
 namespace hybridGaussSeidel {
@@ -16,13 +25,18 @@ inline void rowBlock(int n, int t, int T, int& lo, int& hi) {
   hi = int(long(n) * (t + 1) / T);
 }
 
-// One sweep (forward or backward) on x; old (n entries) is scratch for the values before it.
-void sweep(const SparseMatrixR& A, const double* inv, const double* b, double* x, double* old, bool forward,
-           bool parallel);
+// The interface rows of A split among `threads` blocks, ascending (none for one thread).
+void interfaceRows(const SparseMatrixR& A, int threads, std::vector<int>& rows);
+
+// One sweep (forward or backward) on x, in the order above; `interface` is
+// interfaceRows(A, threads).
+void sweep(const SparseMatrixR& A, const double* inv, const double* b, double* x, const std::vector<int>& interface,
+           int threads, bool forward);
 
 // The forward sweep from x = 0, writing x (its values on entry are not read): the same values
-// as sweep(forward) on x = 0, with each row stopping at its diagonal.
-void sweepFromZero(const SparseMatrixR& A, const double* inv, const double* b, double* x, bool parallel);
+// as sweep(forward) on x = 0, each interior row stopping at its diagonal.
+void sweepFromZero(const SparseMatrixR& A, const double* inv, const double* b, double* x,
+                   const std::vector<int>& interface, int threads);
 
 }  // namespace hybridGaussSeidel
 }  // namespace shizuku

@@ -115,12 +115,20 @@ MUTATIONS = [
              [r"^unit\.test_core_overwriteBuffer$"],
              "a per-pair buffer grows by std::vector's doubling, holding its old and new storage at once "
              "(the 3D 400k case's peak memory: 4.55 instead of 3.21 KB per particle)"),
-    Mutation("smootherFromZeroReadsOtherBlocks", "libsph/linearSolvers/HybridGaussSeidel.cpp",
-             "      while (p < e && col[p] < lo) ++p;\n",
+    Mutation("smootherFromZeroReadsUnsolvedInterface", "libsph/linearSolvers/HybridGaussSeidel.cpp",
+             "  for (const int i : interface) x[i] = 0;\n",
              "",
              [r"^unit\.test_linearSolvers_hybridGaussSeidel$"],
-             "the AMG's first sweep from zero reads the entries of the blocks before the thread's own, "
-             "whose x other threads may not have written yet"),
+             "the AMG's first sweep from zero lets interior rows read the interface rows' x before "
+             "any value was written there"),
+    Mutation("smootherBackwardNotReversed", "libsph/linearSolvers/HybridGaussSeidel.cpp",
+             "    for (auto it = interface.rbegin(); it != interface.rend(); ++it) R.solve(*it, inv, b, x);\n"
+             "    inBlocks(n, threads, interiors);\n",
+             "    inBlocks(n, threads, interiors);\n"
+             "    for (auto it = interface.rbegin(); it != interface.rend(); ++it) R.solve(*it, inv, b, x);\n",
+             [r"^unit\.test_linearSolvers_hybridGaussSeidel$"],
+             "the backward sweep visits the interface rows last, so the smoother is no longer the "
+             "forward sweep's reverse (not symmetric)"),
     Mutation("pressureGradientSign", "libsph/operators/Ops.cpp",
              "  sumOverNeighbours(nl, &rows, scale, true, out,\n"
              "                    [&](long i, Index k) -> Vec<D> { return (f[nl.j[k]] - f[i]) * pw.gradW[k]; });",

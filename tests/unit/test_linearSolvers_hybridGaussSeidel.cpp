@@ -1,8 +1,9 @@
 // The AMG smoother's sweeps (linearSolvers/HybridGaussSeidel.hpp) on a random sparse matrix
 // with couplings across the threads' row blocks and one zero diagonal, on 1, 2 and 3 threads:
-// the sweep from zero (which stops each row at its diagonal and reads nothing outside its
-// block) equals a full forward sweep on x = 0 bit for bit, and that sweep solves each row
-// against the values of its own block only (Gauss-Seidel inside a block, Jacobi across).
+// interfaceRows lists exactly the rows with an entry outside their block; a forward sweep is
+// serial Gauss-Seidel in the order (every block's interior rows, then the interface rows) and
+// a backward sweep in the reverse order, bit for bit; the sweep from zero (interior rows
+// stopping at their diagonal) equals a forward sweep on x = 0 bit for bit.
 #define BOOST_TEST_MODULE linearSolvers_hybridGaussSeidel
 #include "linearSolvers/HybridGaussSeidel.hpp"
 #include <boost/test/unit_test.hpp>
@@ -20,11 +21,13 @@ struct Problem {
   std::vector<double> inv, b;
 };
 
-// Each row couples to 12 random columns anywhere (so every block reads the others);
-// row 17 has no diagonal entry.
+// Each row couples to 12 random columns within 40 of its own (a band, like a particle
+// matrix numbered by cell), every tenth row also to one column anywhere; so most rows are
+// interior to a block and the rows near the block boundaries and the far-coupled ones are
+// interface rows. Row 17 has no diagonal entry.
 Problem randomProblem(int n) {
   std::mt19937 gen(5);
-  std::uniform_int_distribution<int> column(0, n - 1);
+  std::uniform_int_distribution<int> anywhere(0, n - 1), near(-40, 40);
   std::uniform_real_distribution<double> value(0.1, 1.0);
   std::vector<Eigen::Triplet<double>> t;
   Problem p;
@@ -32,8 +35,8 @@ Problem randomProblem(int n) {
   p.inv.resize(n);
   for (int i = 0; i < n; ++i) {
     double sum = 0;
-    for (int k = 0; k < 12; ++k) {
-      const int j = column(gen);
+    for (int k = 0; k < 13; ++k) {
+      const int j = k < 12 ? std::clamp(i + near(gen), 0, n - 1) : i % 10 == 0 ? anywhere(gen) : i;
       if (j == i) continue;
       const double v = value(gen);
       t.emplace_back(i, j, -v);
@@ -52,30 +55,89 @@ Problem randomProblem(int n) {
 
 }  // namespace
 
-BOOST_AUTO_TEST_CASE(the_sweep_from_zero_is_a_hybrid_gauss_seidel_sweep) {
+// Serial Gauss-Seidel over `order` with every other entry of a row at x's current values.
+void serialSweep(const Problem& p, const std::vector<int>& order, std::vector<double>& x) {
+  for (const int i : order) {
+    double s = p.b[i];
+    for (SparseMatrixR::InnerIterator it(p.A, i); it; ++it)
+      if (it.col() != i) s -= it.value() * x[it.col()];
+    x[i] = s * p.inv[i];
+  }
+}
+
+// The forward order the sweep promises for `threads` blocks.
+std::vector<int> forwardOrder(const Problem& p, int threads, const std::vector<int>& interface) {
+  const int n = int(p.A.rows());
+  std::vector<char> isInterface(n, 0);
+  for (const int i : interface) isInterface[i] = 1;
+  std::vector<int> order;
+  for (int t = 0; t < threads; ++t) {
+    int lo, hi;
+    hybridGaussSeidel::rowBlock(n, t, threads, lo, hi);
+    for (int i = lo; i < hi; ++i)
+      if (!isInterface[i]) order.push_back(i);
+  }
+  order.insert(order.end(), interface.begin(), interface.end());
+  return order;
+}
+
+BOOST_AUTO_TEST_CASE(interface_rows_are_the_rows_reaching_another_block) {
+  const int n = 3001;
+  const Problem p = randomProblem(n);
+  for (int threads : {1, 2, 3}) {
+    std::vector<int> rows;
+    hybridGaussSeidel::interfaceRows(p.A, threads, rows);
+    std::vector<int> expected;
+    for (int t = 0; t < threads && threads > 1; ++t) {
+      int lo, hi;
+      hybridGaussSeidel::rowBlock(n, t, threads, lo, hi);
+      for (int i = lo; i < hi; ++i) {
+        bool outside = false;
+        for (SparseMatrixR::InnerIterator it(p.A, i); it; ++it) outside |= it.col() < lo || it.col() >= hi;
+        if (outside) expected.push_back(i);
+      }
+    }
+    BOOST_TEST(rows == expected);
+  }
+  // A banded matrix (tridiagonal): two interface rows per block boundary.
+  SparseMatrixR T(100, 100);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < 100; ++i) {
+    t.emplace_back(i, i, 2.0);
+    if (i > 0) t.emplace_back(i, i - 1, -1.0);
+    if (i < 99) t.emplace_back(i, i + 1, -1.0);
+  }
+  T.setFromTriplets(t.begin(), t.end());
+  std::vector<int> rows;
+  hybridGaussSeidel::interfaceRows(T, 2, rows);
+  BOOST_TEST(rows == std::vector<int>({49, 50}));
+}
+
+// On 1, 2 and 3 threads: the forward and backward sweeps from a nonzero x, and the sweep
+// from zero against the forward sweep on x = 0.
+BOOST_AUTO_TEST_CASE(sweeps_are_gauss_seidel_in_the_stated_order) {
   const int n = 3001;
   const Problem p = randomProblem(n);
   for (int threads : {1, 2, 3}) {
     omp_set_num_threads(threads);
-    std::vector<double> x(n, 7.0), ref(n, 0.0), old(n);
-    hybridGaussSeidel::sweepFromZero(p.A, p.inv.data(), p.b.data(), x.data(), true);
-    hybridGaussSeidel::sweep(p.A, p.inv.data(), p.b.data(), ref.data(), old.data(), true, true);
-    BOOST_TEST(x == ref);  // the same values, bit for bit (7.0 on entry is never read)
-    // Row i of block [lo, hi): b_i - sum_{lo <= j <= i} a_ij x_j = 0 (zero diagonal: x_i = 0).
-    double worst = 0, scale = 0;
-    for (int t = 0; t < threads; ++t) {
-      int lo, hi;
-      hybridGaussSeidel::rowBlock(n, t, threads, lo, hi);
-      for (int i = lo; i < hi; ++i) {
-        double s = p.b[i];
-        for (SparseMatrixR::InnerIterator it(p.A, i); it; ++it)
-          if (it.col() >= lo && it.col() <= i) s -= it.value() * x[it.col()];
-        if (p.inv[i] != 0) worst = std::max(worst, std::abs(s));
-        else BOOST_TEST(x[i] == 0.0);
-        scale = std::max(scale, std::abs(p.b[i]));
-      }
+    std::vector<int> interface;
+    hybridGaussSeidel::interfaceRows(p.A, threads, interface);
+    BOOST_TEST_MESSAGE(threads << " threads: " << interface.size() << " interface rows of " << n);
+    const std::vector<int> order = forwardOrder(p, threads, interface);
+    std::vector<double> start(n);
+    for (int i = 0; i < n; ++i) start[i] = std::sin(0.37 * i);
+    for (bool forward : {true, false}) {
+      std::vector<double> x = start, ref = start;
+      hybridGaussSeidel::sweep(p.A, p.inv.data(), p.b.data(), x.data(), interface, threads, forward);
+      std::vector<int> o = order;
+      if (!forward) std::reverse(o.begin(), o.end());
+      serialSweep(p, o, ref);
+      BOOST_TEST(x == ref);  // bit for bit: the same operations on the same values
     }
-    BOOST_TEST_MESSAGE(threads << " threads: largest unsolved part of a row " << worst);
-    BOOST_TEST(worst <= 1e-14 * scale);
+    std::vector<double> x(n, 7.0), ref(n, 0.0);
+    hybridGaussSeidel::sweepFromZero(p.A, p.inv.data(), p.b.data(), x.data(), interface, threads);
+    hybridGaussSeidel::sweep(p.A, p.inv.data(), p.b.data(), ref.data(), interface, threads, true);
+    BOOST_TEST(x == ref);  // the same values, bit for bit (7.0 on entry is never read)
+    BOOST_TEST(x[17] == 0.0);  // the row without a diagonal
   }
 }
