@@ -33,13 +33,15 @@ struct Rows {
   }
 };
 
-// Runs rows(lo, hi) on every thread's block, the blocks in parallel.
+// Runs block(lo, hi) on each of the `threads` blocks, the blocks in parallel. The blocks are
+// those the interface rows were found for even if the runtime grants fewer threads (a
+// thread then takes several blocks, which share no interior row).
 template <class Block>
 void inBlocks(int n, int threads, Block&& block) {
 #pragma omp parallel num_threads(threads)
-  {
+  for (int t = omp_get_thread_num(); t < threads; t += omp_get_num_threads()) {
     int lo, hi;
-    rowBlock(n, omp_get_thread_num(), omp_get_num_threads(), lo, hi);
+    rowBlock(n, t, threads, lo, hi);
     block(lo, hi);
   }
 }

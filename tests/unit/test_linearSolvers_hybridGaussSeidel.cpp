@@ -3,7 +3,8 @@
 // interfaceRows lists exactly the rows with an entry outside their block; a forward sweep is
 // serial Gauss-Seidel in the order (every block's interior rows, then the interface rows) and
 // a backward sweep in the reverse order, bit for bit; the sweep from zero (interior rows
-// stopping at their diagonal) equals a forward sweep on x = 0 bit for bit.
+// stopping at their diagonal) equals a forward sweep on x = 0 bit for bit; a team smaller than
+// the blocks (a parallel region inside another) still sweeps every block.
 #define BOOST_TEST_MODULE linearSolvers_hybridGaussSeidel
 #include "linearSolvers/HybridGaussSeidel.hpp"
 #include <boost/test/unit_test.hpp>
@@ -140,4 +141,20 @@ BOOST_AUTO_TEST_CASE(sweeps_are_gauss_seidel_in_the_stated_order) {
     BOOST_TEST(x == ref);  // the same values, bit for bit (7.0 on entry is never read)
     BOOST_TEST(x[17] == 0.0);  // the row without a diagonal
   }
+}
+
+// Called where the runtime grants fewer threads than the blocks (inside a parallel region,
+// nested parallelism off: a team of one), a sweep still visits every block's interior rows.
+BOOST_AUTO_TEST_CASE(a_smaller_team_still_sweeps_every_block) {
+  const int n = 3001, threads = 3;
+  const Problem p = randomProblem(n);
+  std::vector<int> interface;
+  hybridGaussSeidel::interfaceRows(p.A, threads, interface);
+  std::vector<double> x(n, 0.0), ref(n, 0.0);
+  omp_set_max_active_levels(1);
+#pragma omp parallel num_threads(2)
+#pragma omp single
+  hybridGaussSeidel::sweep(p.A, p.inv.data(), p.b.data(), x.data(), interface, threads, true);
+  serialSweep(p, forwardOrder(p, threads, interface), ref);
+  BOOST_TEST(x == ref);
 }
