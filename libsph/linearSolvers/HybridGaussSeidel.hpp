@@ -8,7 +8,9 @@
 // Gauss-Seidel in that row order, whatever the thread count: no value of another block is
 // read out of date. (A block-Jacobi split, which reads other blocks' values from before the
 // sweep, took 7.25 BiCGSTAB iterations instead of 5.75 on the 3D 100k dam break's systems
-// on two threads.) With one thread, or `threads` 1, it is Gauss-Seidel in the rows' own
+// on two threads; a block red-black order, 2 T blocks with the even ones swept before the
+// odd ones and no serial part, took 6.6. The interface rows are 1.8 % of the rows of the
+// K&O 20k systems and 17 % of the 3D 100k ones on two threads.) With one thread, or `threads` 1, it is Gauss-Seidel in the rows' own
 // order. Matrices are compressed row-major with ascending columns; inv holds 1 / a_ii (0
 // where a_ii = 0: the row gets x_i = 0). No allocation but interfaceRows growing its list;
 // reads no dictionary keys.
