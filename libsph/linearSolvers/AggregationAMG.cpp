@@ -201,8 +201,11 @@ bool AggregationAMG::setup(const SparseMatrixR& A) {
   threads_ = std::max(1, omp_get_max_threads());
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
     const SparseMatrixR& M = l == 0 ? A : levels_[l].A;
-    levels_[l].threads = M.rows() > kParallelRows ? threads_ : 1;
-    hybridGaussSeidel::interfaceRows(M, levels_[l].threads, levels_[l].interface);
+    Level& L = levels_[l];
+    L.threads = M.rows() > kParallelRows ? threads_ : 1;
+    hybridGaussSeidel::interfaceRows(M, L.threads, L.interface);
+    L.acrossBlocks = !hybridGaussSeidel::interfaceOrderPays(L.interface.size(), int(M.rows()), L.threads);
+    if (L.acrossBlocks) L.old.resize(std::size_t(M.rows()));
   }
   return ok;
 }
@@ -265,9 +268,14 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
     return;
   }
   double* x = xp;
-  hybridGaussSeidel::sweepFromZero(A, L.invDiag.data(), bp, x, L.interface, L.threads);
-  for (int k = 1; k < kSweeps; ++k)
-    hybridGaussSeidel::sweep(A, L.invDiag.data(), bp, x, L.interface, L.threads, true);
+  namespace gs = hybridGaussSeidel;
+  auto sweep = [&](bool forward) {
+    if (L.acrossBlocks) gs::sweepAcrossBlocks(A, L.invDiag.data(), bp, x, L.old.data(), L.threads, forward);
+    else gs::sweep(A, L.invDiag.data(), bp, x, L.interface, L.threads, forward);
+  };
+  if (L.acrossBlocks) gs::sweepFromZeroAcrossBlocks(A, L.invDiag.data(), bp, x, L.threads);
+  else gs::sweepFromZero(A, L.invDiag.data(), bp, x, L.interface, L.threads);
+  for (int k = 1; k < kSweeps; ++k) sweep(true);
   // r = b - A x, restricted.
   {
     const int* outer = A.outerIndexPtr();
@@ -298,8 +306,7 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
       x[i] += s;
     }
   }
-  for (int k = 0; k < kSweeps; ++k)
-    hybridGaussSeidel::sweep(A, L.invDiag.data(), bp, x, L.interface, L.threads, false);
+  for (int k = 0; k < kSweeps; ++k) sweep(false);
 }
 
 void AggregationAMG::apply(const double* r, double* z) const { cycle(0, *fine_, r, z); }

@@ -57,6 +57,8 @@ class AggregationAMG final : public Preconditioner {
     mutable std::vector<double> x, b, r;  // x, b: levels below the finest
     std::vector<int> interface;  // rows the smoother visits after the blocks' interiors
     int threads = 1;             // threads the smoother splits the level between
+    bool acrossBlocks = false;   // block-Jacobi split instead (interfaceOrderPays false)
+    mutable std::vector<double> old;  // its values from before a sweep (sized only then)
   };
   void build(const SparseMatrixR& A);
   // One V-cycle from level l down: x = (approximately) A^-1 b.

@@ -109,5 +109,49 @@ void sweepFromZero(const SparseMatrixR& A, const double* inv, const double* b, d
   for (const int i : interface) R.solve(i, inv, b, x);
 }
 
+bool interfaceOrderPays(std::size_t interfaceRows, int n, int threads) {
+  return double(interfaceRows) * double(threads - 1) <= 0.2 * double(n);
+}
+
+void sweepAcrossBlocks(const SparseMatrixR& A, const double* inv, const double* b, double* x, double* old,
+                       int threads, bool forward) {
+  const Rows R(A);
+  const int n = int(A.rows());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (int i = 0; i < n; ++i) old[i] = x[i];
+  inBlocks(n, threads, [&](int lo, int hi) {
+    // Columns ascend: a row's entries before its block (old values), in it (current values,
+    // the diagonal skipped) and after it (old values).
+    auto row = [&](int i) {
+      double s = b[i];
+      int p = R.outer[i];
+      const int e = R.outer[i + 1];
+      for (; p < e && R.col[p] < lo; ++p) s -= R.val[p] * old[R.col[p]];
+      for (; p < e && R.col[p] < hi; ++p)
+        if (R.col[p] != i) s -= R.val[p] * x[R.col[p]];
+      for (; p < e; ++p) s -= R.val[p] * old[R.col[p]];
+      x[i] = s * inv[i];
+    };
+    if (forward)
+      for (int i = lo; i < hi; ++i) row(i);
+    else
+      for (int i = hi - 1; i >= lo; --i) row(i);
+  });
+}
+
+void sweepFromZeroAcrossBlocks(const SparseMatrixR& A, const double* inv, const double* b, double* x, int threads) {
+  const Rows R(A);
+  inBlocks(int(A.rows()), threads, [&](int lo, int hi) {
+    for (int i = lo; i < hi; ++i) {
+      double s = b[i];
+      int p = R.outer[i];
+      const int e = R.outer[i + 1];
+      while (p < e && R.col[p] < lo) ++p;
+      for (; p < e && R.col[p] < i; ++p) s -= R.val[p] * x[R.col[p]];
+      x[i] = s * inv[i];
+    }
+  });
+}
+
 }  // namespace hybridGaussSeidel
 }  // namespace shizuku

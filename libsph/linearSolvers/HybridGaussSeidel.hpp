@@ -10,7 +10,11 @@
 // sweep, took 7.25 BiCGSTAB iterations instead of 5.75 on the 3D 100k dam break's systems
 // on two threads; a block red-black order, 2 T blocks with the even ones swept before the
 // odd ones and no serial part, took 6.6. The interface rows are 1.8 % of the rows of the
-// K&O 20k systems and 17 % of the 3D 100k ones on two threads.) With one thread, or `threads` 1, it is Gauss-Seidel in the rows' own
+// K&O 20k systems and 17 % of the 3D 100k ones on two threads.) Where the interface rows are
+// many, as with many threads across a thin domain (every thread adds a cut), their serial
+// sweep would cost more than the iterations it saves: interfaceOrderPays decides, and the
+// other sweeps below are the block-Jacobi split (each block reads the others' values from
+// before the sweep; deterministic, fully parallel). With one thread, or `threads` 1, it is Gauss-Seidel in the rows' own
 // order. Matrices are compressed row-major with ascending columns; inv holds 1 / a_ii (0
 // where a_ii = 0: the row gets x_i = 0). No allocation but interfaceRows growing its list;
 // reads no dictionary keys.
@@ -39,6 +43,19 @@ void sweep(const SparseMatrixR& A, const double* inv, const double* b, double* x
 // as sweep(forward) on x = 0, each interior row stopping at its diagonal.
 void sweepFromZero(const SparseMatrixR& A, const double* inv, const double* b, double* x,
                    const std::vector<int>& interface, int threads);
+
+// Whether the interface rows' serial sweep costs less than the iterations a block-Jacobi
+// split loses: with f the interface rows' share, a sweep takes (1 - f)/T + f of a serial
+// one against 1/T, and the split cost 26 % more iterations in 3D and 12 % in 2D (two
+// threads, the dam breaks above); so the interface order pays while f (T - 1) <= 0.2.
+bool interfaceOrderPays(std::size_t interfaceRows, int n, int threads);
+
+// The block-Jacobi split: Gauss-Seidel inside each of the `threads` blocks, the other
+// blocks' values from before the sweep (old: n scratch values).
+void sweepAcrossBlocks(const SparseMatrixR& A, const double* inv, const double* b, double* x, double* old,
+                       int threads, bool forward);
+// Its forward sweep from x = 0 (each row stops at its diagonal and reads only its block).
+void sweepFromZeroAcrossBlocks(const SparseMatrixR& A, const double* inv, const double* b, double* x, int threads);
 
 }  // namespace hybridGaussSeidel
 }  // namespace shizuku
