@@ -166,7 +166,7 @@ void spmv(const SparseMatrixR& M, const double* x, double* y) {
 }  // namespace
 
 std::string AggregationAMG::describe() const {
-  return cat("AMG (smoothed aggregation, Gauss-Seidel V-cycle with the rows coupling threads' blocks last", reuse_ > 1 ? cat(", hierarchy kept up to ", reuse_, " steps") : "",
+  return cat("AMG (smoothed aggregation, Gauss-Seidel V-cycle", reuse_ > 1 ? cat(", hierarchy kept up to ", reuse_, " steps") : "",
              ")");
 }
 
@@ -194,18 +194,14 @@ bool AggregationAMG::setup(const SparseMatrixR& A) {
   } else {
     ++sinceSetup_;
   }
-  // The finest level smooths with this step's matrix; every level split between the threads
-  // finds its interface rows for this solve's thread count.
+  // The finest level smooths with this step's matrix; every level finds its split between
+  // this solve's threads.
   Level& L0 = levels_[0];
   const bool ok = invertDiagonal(A, L0.invDiag.data(), 0.0);
-  threads_ = std::max(1, omp_get_max_threads());
+  const int threads = omp_get_max_threads();
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
     const SparseMatrixR& M = l == 0 ? A : levels_[l].A;
-    Level& L = levels_[l];
-    L.threads = M.rows() > kParallelRows ? threads_ : 1;
-    hybridGaussSeidel::interfaceRows(M, L.threads, L.interface);
-    L.acrossBlocks = !hybridGaussSeidel::interfaceOrderPays(L.interface.size(), int(M.rows()), L.threads);
-    if (L.acrossBlocks) L.old.resize(std::size_t(M.rows()));
+    levels_[l].split.prepare(M, M.rows() > kParallelRows ? threads : 1);
   }
   return ok;
 }
@@ -268,14 +264,8 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
     return;
   }
   double* x = xp;
-  namespace gs = hybridGaussSeidel;
-  auto sweep = [&](bool forward) {
-    if (L.acrossBlocks) gs::sweepAcrossBlocks(A, L.invDiag.data(), bp, x, L.old.data(), L.threads, forward);
-    else gs::sweep(A, L.invDiag.data(), bp, x, L.interface, L.threads, forward);
-  };
-  if (L.acrossBlocks) gs::sweepFromZeroAcrossBlocks(A, L.invDiag.data(), bp, x, L.threads);
-  else gs::sweepFromZero(A, L.invDiag.data(), bp, x, L.interface, L.threads);
-  for (int k = 1; k < kSweeps; ++k) sweep(true);
+  L.split.sweepFromZero(A, L.invDiag.data(), bp, x);
+  for (int k = 1; k < kSweeps; ++k) L.split.sweep(A, L.invDiag.data(), bp, x, true);
   // r = b - A x, restricted.
   {
     const int* outer = A.outerIndexPtr();
@@ -306,7 +296,7 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
       x[i] += s;
     }
   }
-  for (int k = 0; k < kSweeps; ++k) sweep(false);
+  for (int k = 0; k < kSweeps; ++k) L.split.sweep(A, L.invDiag.data(), bp, x, false);
 }
 
 void AggregationAMG::apply(const double* r, double* z) const { cycle(0, *fine_, r, z); }

@@ -15,8 +15,8 @@
 //     LU instead: a dense one would need 8 n^2 bytes and n^3 operations.
 //     Rows with no off-diagonal entry (p = 0 rows) are left out of the coarse grids.
 //   cycle: one Gauss-Seidel sweep forward before and backward after the coarse
-//     correction, split between the threads by row blocks with the rows that couple
-//     blocks visited last (HybridGaussSeidel.hpp). The finest level always uses the current
+//     correction, split between the threads by row blocks, the rows that couple blocks
+//     visited last where that pays (HybridGaussSeidel.hpp). The finest level always uses the current
 //     matrix; the coarse levels are kept from the last setup (the matrix changes
 //     little from one step to the next).
 // Levels below 2048 rows run on one thread. The setup's products (P, R = P^T and
@@ -26,6 +26,7 @@
 // caller's vectors, and the first sweep from x = 0 stops each row at its diagonal.
 // Keys: preconditioner AMG; amgReuse 10.
 #pragma once
+#include "linearSolvers/HybridGaussSeidel.hpp"
 #include "linearSolvers/Preconditioner.hpp"
 #include <Eigen/Dense>
 #include <Eigen/SparseLU>
@@ -55,10 +56,7 @@ class AggregationAMG final : public Preconditioner {
     SparseMatrixR P, R;                // to / from the next coarser level
     std::vector<double> invDiag;
     mutable std::vector<double> x, b, r;  // x, b: levels below the finest
-    std::vector<int> interface;  // rows the smoother visits after the blocks' interiors
-    int threads = 1;             // threads the smoother splits the level between
-    bool acrossBlocks = false;   // block-Jacobi split instead (interfaceOrderPays false)
-    mutable std::vector<double> old;  // its values from before a sweep (sized only then)
+    hybridGaussSeidel::ThreadSplit split;  // the smoother's split between threads (this solve)
   };
   void build(const SparseMatrixR& A);
   // One V-cycle from level l down: x = (approximately) A^-1 b.
@@ -66,7 +64,7 @@ class AggregationAMG final : public Preconditioner {
 
   int reuse_;
   bool stale_ = true;
-  int n_ = 0, sinceSetup_ = 0, setupIterations_ = 0, threads_ = 1;
+  int n_ = 0, sinceSetup_ = 0, setupIterations_ = 0;
   long setups_ = 0;
   const SparseMatrixR* fine_ = nullptr;  // this step's matrix (alive during the solve)
   std::vector<Level> levels_;

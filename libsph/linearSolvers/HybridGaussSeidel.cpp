@@ -1,6 +1,7 @@
 // Gauss-Seidel sweeps of the AMG smoother, interior rows by block in parallel and interface
 // rows after them (see HybridGaussSeidel.hpp).
 #include "linearSolvers/HybridGaussSeidel.hpp"
+#include <algorithm>
 #include <omp.h>
 
 namespace shizuku {
@@ -151,6 +152,23 @@ void sweepFromZeroAcrossBlocks(const SparseMatrixR& A, const double* inv, const 
       x[i] = s * inv[i];
     }
   });
+}
+
+void ThreadSplit::prepare(const SparseMatrixR& A, int threads) {
+  threads_ = std::max(1, threads);
+  interfaceRows(A, threads_, interface_);
+  acrossBlocks_ = !interfaceOrderPays(interface_.size(), int(A.rows()), threads_);
+  if (acrossBlocks_) old_.resize(std::size_t(A.rows()));
+}
+
+void ThreadSplit::sweep(const SparseMatrixR& A, const double* inv, const double* b, double* x, bool forward) const {
+  if (acrossBlocks_) sweepAcrossBlocks(A, inv, b, x, old_.data(), threads_, forward);
+  else hybridGaussSeidel::sweep(A, inv, b, x, interface_, threads_, forward);
+}
+
+void ThreadSplit::sweepFromZero(const SparseMatrixR& A, const double* inv, const double* b, double* x) const {
+  if (acrossBlocks_) sweepFromZeroAcrossBlocks(A, inv, b, x, threads_);
+  else hybridGaussSeidel::sweepFromZero(A, inv, b, x, interface_, threads_);
 }
 
 }  // namespace hybridGaussSeidel

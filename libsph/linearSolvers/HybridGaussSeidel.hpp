@@ -57,5 +57,21 @@ void sweepAcrossBlocks(const SparseMatrixR& A, const double* inv, const double* 
 // Its forward sweep from x = 0 (each row stops at its diagonal and reads only its block).
 void sweepFromZeroAcrossBlocks(const SparseMatrixR& A, const double* inv, const double* b, double* x, int threads);
 
+// One matrix's split between threads, decided once per solve: prepare() finds the interface
+// rows and whether their order pays; the sweeps then take the order or the block-Jacobi split.
+class ThreadSplit {
+ public:
+  void prepare(const SparseMatrixR& A, int threads);
+  void sweep(const SparseMatrixR& A, const double* inv, const double* b, double* x, bool forward) const;
+  void sweepFromZero(const SparseMatrixR& A, const double* inv, const double* b, double* x) const;
+  bool acrossBlocks() const { return acrossBlocks_; }
+
+ private:
+  int threads_ = 1;
+  bool acrossBlocks_ = false;
+  std::vector<int> interface_;
+  mutable std::vector<double> old_;  // the block-Jacobi split's values from before a sweep
+};
+
 }  // namespace hybridGaussSeidel
 }  // namespace shizuku

@@ -5,7 +5,7 @@
 // a backward sweep in the reverse order, bit for bit; the sweep from zero (interior rows
 // stopping at their diagonal) equals a forward sweep on x = 0 bit for bit; a team smaller than
 // the blocks (a parallel region inside another) still sweeps every block; interfaceOrderPays
-// and the block-Jacobi split it falls back to.
+// and the block-Jacobi split it falls back to; ThreadSplit choosing between them.
 #define BOOST_TEST_MODULE linearSolvers_hybridGaussSeidel
 #include "linearSolvers/HybridGaussSeidel.hpp"
 #include <boost/test/unit_test.hpp>
@@ -196,5 +196,38 @@ BOOST_AUTO_TEST_CASE(the_block_jacobi_split) {
       }
     }
     BOOST_TEST(worst <= 1e-14 * scale);
+  }
+}
+
+// ThreadSplit takes the interface order on the banded matrix (few interface rows) and the
+// block-Jacobi split where every row couples blocks, and its sweeps equal those functions'.
+BOOST_AUTO_TEST_CASE(the_thread_split_chooses_and_sweeps) {
+  const int n = 3001, threads = 2;  // the banded matrix: 196 interface rows (6.5 %)
+  const Problem banded = randomProblem(n);
+  SparseMatrixR dense(n, n);  // every row reaches every block
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, i, 4.0);
+    t.emplace_back(i, (i + n / 2) % n, -1.0);
+  }
+  dense.setFromTriplets(t.begin(), t.end());
+  for (const SparseMatrixR* A : std::vector<const SparseMatrixR*>{&banded.A, &dense}) {
+    hybridGaussSeidel::ThreadSplit split;
+    split.prepare(*A, threads);
+    std::vector<int> outside;
+    hybridGaussSeidel::interfaceRows(*A, threads, outside);
+    BOOST_TEST(split.acrossBlocks() == !hybridGaussSeidel::interfaceOrderPays(outside.size(), n, threads));
+    std::vector<double> x(n, 0.0), ref(n, 0.0), old(n);
+    split.sweepFromZero(*A, banded.inv.data(), banded.b.data(), x.data());
+    split.sweep(*A, banded.inv.data(), banded.b.data(), x.data(), false);
+    if (split.acrossBlocks()) {
+      hybridGaussSeidel::sweepFromZeroAcrossBlocks(*A, banded.inv.data(), banded.b.data(), ref.data(), threads);
+      hybridGaussSeidel::sweepAcrossBlocks(*A, banded.inv.data(), banded.b.data(), ref.data(), old.data(), threads, false);
+    } else {
+      hybridGaussSeidel::sweepFromZero(*A, banded.inv.data(), banded.b.data(), ref.data(), outside, threads);
+      hybridGaussSeidel::sweep(*A, banded.inv.data(), banded.b.data(), ref.data(), outside, threads, false);
+    }
+    BOOST_TEST(x == ref);
+    BOOST_TEST(split.acrossBlocks() == (A == &dense));
   }
 }
