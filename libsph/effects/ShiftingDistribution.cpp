@@ -49,6 +49,27 @@ const char* gradientName(DistributionParameters::Gradient g) {
   return "?";
 }
 
+// The frame of a free or splash particle beside a wall that rises above the water (docs/method.md
+// 6, "beside a dry wall"). Where the surface fit (8.2) holds for i and some wall neighbour j lies
+// beyond the fitted surface, (r_j - r_i) . n_fit > d0 (1/2 - s_i), the detector's normal is tilted
+// away from that wall (its kernel sum reads the dry wall as fluid where the other side is air) and
+// the dry wall pushes i along the surface: i then projects with n_fit and leaves out the wall
+// particles beyond the surface. Returns false (frame unchanged) otherwise.
+template <int D>
+bool besideDryWall(const FlowState<D>& s, std::size_t i, Vec<D>& n, double& beyond) {
+  if (s.fitDistance.size() != s.size() || !std::isfinite(s.fitDistance[i])) return false;
+  const Vec<D>& nFit = s.fitNormal[i];
+  const double surface = s.d0 * (0.5 - s.fitDistance[i]);
+  const auto& nl = s.neighbours;
+  for (Index k = nl.begin(i); k < nl.end(i); ++k)
+    if (!s.isFluid(nl.j[k]) && -nl.rij(i, k).dot(nFit) > surface) {
+      n = nFit;
+      beyond = surface;
+      return true;
+    }
+  return false;
+}
+
 // x^p, by repeated multiplication when p is a small whole number (np = 4 by default).
 inline double power(double x, double p, int whole) {
   if (whole < 0) return std::pow(x, p);
@@ -95,7 +116,9 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     const bool deepVicinity =
         cls == SurfaceClass::vicinity && haveGradC && s.gradC[i].norm() * h < this->par_.projectionThreshold;
     const bool project = cls != SurfaceClass::interior && !deepVicinity;
-    const Vec<D> ni = nrm.size() == s.size() ? nrm[i] : Vec<D>::Zero();
+    Vec<D> ni = nrm.size() == s.size() ? nrm[i] : Vec<D>::Zero();
+    double beyond = INFINITY;  // wall particles farther than this along ni are left out
+    if (project && cls != SurfaceClass::vicinity) besideDryWall(s, std::size_t(i), ni, beyond);
     if (project && ni.squaredNorm() < 0.25) continue;
     // Particles without SPH(2) weights fall back to the kernel gradient.
     const G grad = (haveWeights && s.weights.order[i] != 255) ? this->par_.gradient : G::kernel;
@@ -104,7 +127,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
       const Vec<D> rij = nl.rij(std::size_t(i), k);
       const double r = rij.norm();
-      if (!(r > 0)) continue;
+      if (!(r > 0) || (-rij.dot(ni) > beyond && !s.isFluid(nl.j[k]))) continue;
       if (ops) {
         double wv, dw;
         s.kernel.eval(r, wv, dw);

@@ -129,6 +129,12 @@ MUTATIONS = [
              [r"^unit\.test_linearSolvers_hybridGaussSeidel$"],
              "the backward sweep visits the interface rows last, so the smoother is no longer the "
              "forward sweep's reverse (not symmetric)"),
+    Mutation("opsIgnoresDryWall", "libsph/effects/ShiftingDistribution.cpp",
+             "    if (project && cls != SurfaceClass::vicinity) besideDryWall(s, std::size_t(i), ni, beyond);\n",
+             "",
+             [r"^unit\.test_effects_ops$", r"^unit\.test_isph_hydrostatic$"],
+             "OPS projects a free particle beside a wall that rises above the water with the detector's "
+             "normal and counts the dry wall: the still tank's top corners are lifted"),
     Mutation("pressureGradientSign", "libsph/operators/Ops.cpp",
              "  sumOverNeighbours(nl, &rows, scale, true, out,\n"
              "                    [&](long i, Index k) -> Vec<D> { return (f[nl.j[k]] - f[i]) * pw.gradW[k]; });",

@@ -166,11 +166,10 @@ const std::string kTutorialSchemes =
     "maxShift 0.1; }\n";
 
 // Largest |p - rho g (H - y)| over the fluid, relative to rho g H, with H the nominal depth
-// (the fluid box's top), after `steps` steps of dt. cornerSkip > 0: leave out the particles
-// within cornerSkip d0 of both the surface and a side wall (the surface's corners).
+// (the fluid box's top), after `steps` steps of dt.
 template <int D>
 double nominalDepthError(const Tank& t, double d0, const std::string& schemes, int steps, double dt,
-                         const std::string& extra = "", double cornerSkip = 0) {
+                         const std::string& extra = "") {
   test::TempCase c("surfaceCondition");
   writeTank<D>(c, "BiCGSTAB", schemes + extra, t, d0);
   SimulationOptions opt;
@@ -187,38 +186,30 @@ double nominalDepthError(const Tank& t, double d0, const std::string& schemes, i
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (!s.isFluid(i)) continue;
     const Vec<D>& x = s.particles.position[i];
-    bool nearWall = false;
-    for (int a = 0; a < D; a += 2) nearWall |= std::min(x[a], t.width - x[a]) < cornerSkip * d0;
-    if (nearWall && H - x.y() < cornerSkip * d0) continue;
     maxErr = std::max(maxErr, std::abs(s.particles.pressure[i] - rho * g * (H - x.y())));
   }
   return maxErr / (rho * g * H);
 }
 }  // namespace
 
-// Issue 18: p = 0 on the surface (eq. 6b), 15 particles deep at d0 = 2 cm. After 0.2 s
-// with the tutorial's shifting the lattice has moved (the first step alone is exact, see
-// above). Everywhere the error is below 0.5 % of rho g H (issue 18): measured 8.4e-4,
-// 1.4e-4, 1.3e-4 at d0 = 3, 2, 1 cm. Away from the surface's two corners (the particles
-// within 2 d0 of the surface and a side wall) it falls at second order: 8.2e-4, 1.4e-4,
-// 4.3e-5 (orders 2.7 and 1.7). The corner particles are shifted along the surface toward
-// the wall (0.035 d0 at 1 cm) and read 1.3e-4 there (docs/method.md 4.4). p = 0 on the
-// particles (pressureCondition particles) fails it: rho g d0/2 low everywhere.
-BOOST_AUTO_TEST_CASE(still_tank_pressure_second_order_in_d0_2d) {
+// Issue 18: p = 0 on the surface (eq. 6b), 15 particles deep at d0 = 2 cm, after 0.2 s of
+// the tutorial's shifting. A tank of whole spacings is a fixed point of the step: the shift of
+// every particle is zero on the lattice, also beside the side walls that rise above the water
+// (docs/method.md 6, "beside a dry wall"), so the pressure stays rho g (H - y) to the solver's
+// tolerance: measured 9.5e-14 and 6.5e-11 of rho g H at d0 = 2 and 1 cm (second order holds
+// trivially). At 3 cm the tank is 13.3 spacings wide, the water takes its own spacing across
+// (docs/boundaries.md) and its lattice settles while the test runs: 1.9e-5, within issue 18's
+// 0.5 %. Planted: with the detector's normal and every wall particle in the top corners' shift
+// (the frame before the dry-wall treatment) the corners were lifted and the error was 8.1e-4,
+// 1.4e-4, 1.3e-4 (first order at the corners); p = 0 on the particles (pressureCondition
+// particles) is rho g d0/2 low everywhere.
+BOOST_AUTO_TEST_CASE(still_tank_stays_exact_under_shifting_2d) {
   const Tank t{0.4, 0.5, 0.3};
-  std::vector<double> err;
   for (double d0 : {0.03, 0.02, 0.01}) {
-    const double whole = nominalDepthError<2>(t, d0, kTutorialSchemes, 100, 2e-3);
-    BOOST_TEST_MESSAGE("2D d0 = " << d0 << ": the whole fluid " << whole);
-    BOOST_TEST(whole <= 5e-3);
-    err.push_back(nominalDepthError<2>(t, d0, kTutorialSchemes, 100, 2e-3, "", 2));
-    BOOST_TEST_MESSAGE("2D d0 = " << d0 << ": max |p - rho g (H - y)| / (rho g H) = " << err.back());
-    BOOST_TEST(err.back() <= 5e-3);
+    const double err = nominalDepthError<2>(t, d0, kTutorialSchemes, 100, 2e-3);
+    BOOST_TEST_MESSAGE("2D d0 = " << d0 << ": max |p - rho g (H - y)| / (rho g H) = " << err);
+    BOOST_TEST(err <= (d0 == 0.03 ? 5e-3 : kPressureTolerance));
   }
-  const double order01 = std::log(err[0] / err[2]) / std::log(3.0), order12 = std::log(err[1] / err[2]) / std::log(2.0);
-  BOOST_TEST_MESSAGE("2D orders: 3 -> 1 cm " << order01 << ", 2 -> 1 cm " << order12);
-  BOOST_TEST(order01 >= 1.8);
-  BOOST_TEST(order12 >= 1.6);
 }
 
 // In 3D the first step at three resolutions (0.12 m wide, 4, 6, 8 spacings; 3D tanks of whole and non-whole
@@ -242,20 +233,15 @@ BOOST_AUTO_TEST_CASE(still_tank_first_step_three_resolutions_3d_and_the_old_cond
 }
 
 // 3D after 0.1 s of the tutorial's shifting, a tank of whole spacings (0.12 m wide, 0.36 m
-// high, 0.3 m deep: 4, 6, 8 spacings across, 10, 15, 20 deep): measured 1.01e-3, 6.9e-4,
-// 4.8e-4 of rho g H at d0 = 3, 2, 1.5 cm, within the 0.5 % of issue 18 but first order
-// (1.06): the largest error is always at the four top corner particles (two walls
-// beside them), lifted about 0.01 d0 by the shifting while p = 0 stays d0/2 above them
-// (docs/method.md 4.4, open). Checked: the bound and that the error falls with d0.
-BOOST_AUTO_TEST_CASE(still_tank_pressure_after_shifting_3d) {
+// high, 0.3 m deep: 4, 6, 8 spacings across, 10, 15, 20 deep): a fixed point as in 2D,
+// measured 9.0e-14, 7.5e-14, 6.4e-14 of rho g H at d0 = 3, 2, 1.5 cm. Planted: with the frame
+// before the dry-wall treatment the four top corner particles rose 0.01 d0 and the error was
+// 9.8e-4, 5.9e-4, 3.6e-4 (first order).
+BOOST_AUTO_TEST_CASE(still_tank_stays_exact_under_shifting_3d) {
   const Tank t{0.12, 0.36, 0.3};
-  std::vector<double> err;
   for (double d0 : {0.03, 0.02, 0.015}) {
-    err.push_back(nominalDepthError<3>(t, d0, kTutorialSchemes, 50, 2e-3));
-    BOOST_TEST_MESSAGE("3D d0 = " << d0 << " after 0.1 s: " << err.back());
-    BOOST_TEST(err.back() <= 5e-3);
+    const double err = nominalDepthError<3>(t, d0, kTutorialSchemes, 50, 2e-3);
+    BOOST_TEST_MESSAGE("3D d0 = " << d0 << " after 0.1 s: " << err);
+    BOOST_TEST(err <= kPressureTolerance);
   }
-  const double order = std::log(err[0] / err[2]) / std::log(2.0);
-  BOOST_TEST_MESSAGE("3D order 3 -> 1.5 cm: " << order);
-  BOOST_TEST(order >= 0.8);
 }
