@@ -19,6 +19,9 @@ const OptionParameter derivatives = schemes.option("derivatives", {"SPH2", "corr
     "derivative operators: second-order SPH(2), first-order corrected, or standard (docs/method.md 3)").def("SPH2");
 const IntParameter reorderInterval = schemes.integer("reorderInterval",
     "steps between cell reorderings of the particles (0: never)").def(20).min(0);
+const OptionParameter positionUpdate = schemes.option("positionUpdate", {"euler", "midpoint"},
+    "advection: r + dt u (eq. 7), or the implicit midpoint rule on the velocity linearised at each particle, "
+    "which keeps the volume of a strained fluid (eq. 7b; docs/method.md 4.1)").def("euler");
 }  // namespace key
 
 // The neighbour search (minimum image) needs each periodic length to be at least twice
@@ -86,6 +89,8 @@ NumericalScheme<D> CaseSetup<D>::readScheme(const CaseFiles& files, FlowState<D>
   scheme.freeSurface = std::make_unique<FreeSurfaceDetector<D>>(
       FreeSurfaceParameters::read(sch.subDictPtr("freeSurface")));
   scheme.reorderInterval = key::reorderInterval.read(sch);
+  scheme.positionUpdate = key::positionUpdate.read(sch) == "midpoint" ? PositionUpdate<D>::Rule::midpoint
+                                                                      : PositionUpdate<D>::Rule::euler;
   scheme.ppe = std::make_unique<PressureEquation<D>>(LinearSolver::create(files.sphSolution.subDictPtr("pressure")));
   scheme.ppe->setZeroPressureOnSurface(scheme.freeSurface->parameters().zeroPressureOnSurface);
   return scheme;

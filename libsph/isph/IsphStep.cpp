@@ -20,6 +20,8 @@ IsphStep<D>::IsphStep(FlowState<D>& s, NumericalScheme<D> scheme, EffectSet<D> e
     s_.curvature.assign(s_.size(), NAN);
   }
   if (!effects_.advectionVelocities.empty()) du_.resize(s_.size());
+  positions_ = PositionUpdate<D>(scheme_.positionUpdate);
+  positions_.allocate(s_.size());
   search_ = std::make_unique<NeighbourSearch<D>>(s_.kernel.support(), s_.periodic);
   source_.resize(s_.size());
   // Timed stages in execution order (the timing columns follow it); optional stages
@@ -169,14 +171,13 @@ void IsphStep<D>::advect() {
     }
   }
   StageTimers::Scope t(timers_, st_.advection);
-  const double dt = s_.dt;
+  positions_.move(s_, du_);
+  if (s_.periodic.any()) {
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    if (!s_.isFluid(i)) continue;
-    P.position[i] += dt * (extra ? Vec<D>(P.velocity[i] + du_[i]) : P.velocity[i]);
-    if (s_.periodic.any()) s_.periodic.wrap(P.position[i]);
+    for (long i = 0; i < n; ++i)
+      if (s_.isFluid(i)) s_.periodic.wrap(P.position[i]);
   }
-  if (movingWalls_) movingWalls_->place(P, s_.time + dt);
+  if (movingWalls_) movingWalls_->place(P, s_.time + s_.dt);
   s_.exchange(P.position);
 }
 
@@ -245,6 +246,7 @@ void IsphStep<D>::particleCountChanged() {
     s_.curvature.resize(n, NAN);
   }
   if (!du_.empty()) du_.resize(n);
+  positions_.allocate(n);
   source_.resize(n);
   effects_.allocate(s_);  // the effects' scratch (re-zeroed; refilled every step)
 }
@@ -270,8 +272,7 @@ std::vector<std::string> IsphStep<D>::describe() const {
   line(cat("pressure Poisson equation: source rho/dt <div u*> (eq. 6), ", scheme_.ppe->solver().describe()));
   for (const auto& e : effects_.pressureSources) line(cat("  + ", e->name(), " (", e->describe(), ")"));
   line("corrector: u = u* - dt/rho <grad p> (eq. 5)");
-  line(movingWalls_ ? "advection: r = r + dt u (eq. 7); moving walls to their pose at t + dt"
-                    : "advection: r = r + dt u (eq. 7)");
+  line(positions_.describe() + (movingWalls_ ? "; moving walls to their pose at t + dt" : ""));
   if (movingWalls_)
     for (const auto& l : movingWalls_->describe()) line(l);
   for (const auto& e : effects_.advectionVelocities) line(cat(e->name(), " (", e->describe(), ")"));

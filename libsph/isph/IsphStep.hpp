@@ -4,7 +4,8 @@
 //   5    predict():        u* = u^n + dt (forces: g, nu <lap u^n>)                   (eq. 4)
 //   6    solvePressure():  <lap p> = rho/dt <div u*> [+ pressure sources, eq. 9]     (eqs. 6, 9)
 //   7    correct():        u^{n+1} = u* - dt/rho <grad p>                            (eq. 5)
-//   8    advect():         r' = r^n + dt (u^{n+1} + advection velocities, XSPH)      (eq. 7)
+//   8    advect():         r' = r^n + dt (u^{n+1} + advection velocities, XSPH)      (eq. 7,
+//                          or the implicit midpoint rule of eq. 7b: isph/PositionUpdate.hpp)
 //   9    correctPositions(): position corrections after advection (ADS)
 //   10   shift():          particle shifting, capped, Taylor-corrected u (eq. 10)
 // The step owns the numerical scheme (derivative operator, neighbour search, free-surface
@@ -18,6 +19,7 @@
 #include "boundaries/MovingWalls.hpp"
 #include "decomposition/DomainDecomposition.hpp"
 #include "effects/EffectSet.hpp"
+#include "isph/PositionUpdate.hpp"
 #include "pressure/PressureEquation.hpp"
 #include "surface/FreeSurface.hpp"
 #include <memory>
@@ -33,6 +35,7 @@ struct NumericalScheme {
   std::unique_ptr<FreeSurfaceDetector<D>> freeSurface;
   std::unique_ptr<PressureEquation<D>> ppe;
   int reorderInterval = 20;  // steps between cell reorderings of the particles (0: never)
+  typename PositionUpdate<D>::Rule positionUpdate = PositionUpdate<D>::Rule::euler;  // eq. 7 or 7b
 };
 
 // Statistics of the last step, for the progress line and tests.
@@ -123,6 +126,7 @@ class IsphStep {
   std::vector<double> source_;
   std::vector<std::uint8_t> weightRows_;
   std::vector<Vec<D>> du_;
+  PositionUpdate<D> positions_;
 };
 
 }  // namespace shizuku

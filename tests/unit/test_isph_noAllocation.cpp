@@ -107,8 +107,9 @@ using namespace shizuku;
 
 namespace {
 
-// `motion`: the tank's motion entry (empty: a fixed tank).
-void writeDamBreak(test::TempCase& c, const std::string& pressure, const std::string& motion = "") {
+// `motion`: the tank's motion entry (empty: a fixed tank); `schemes`: more sphSchemes entries.
+void writeDamBreak(test::TempCase& c, const std::string& pressure, const std::string& motion = "",
+                   const std::string& schemes = "") {
   c.file("system/controlDict", "endTime 1; deltaT 5e-4; writeControl timeStep; writeInterval 100000;\n");
   c.file("system/particlesDict",
          "spacing 0.02;\nregions {\n column { type fluid; shape box; min (0 0); max (0.3 0.4); }\n"
@@ -117,16 +118,17 @@ void writeDamBreak(test::TempCase& c, const std::string& pressure, const std::st
          "derivatives SPH2;\n"
          "shifting { distribution { type OPS; C 0.2; Rp 0.2; np 4; } volumeCorrection { C 0.1; }\n"
          "  surfaceFitting { C 1e-4; maxCurvature 0.2; minDistance 0.15; maxDistance 0.6; } maxShift 0.1; }\n"
-         "ads { }\nxsph { epsilon 0.5; }\n");
+         "ads { }\nxsph { epsilon 0.5; }\n" + schemes);
   c.file("system/sphSolution", "pressure { " + pressure + " }\n");
   c.file("constant/physicalProperties", "rho 1000; nu 1e-6;\n");
   c.file("constant/g", "value (0 -9.81);\n");
 }
 
 // Allocations per step after `warmup` steps, counted over `steps` steps.
-long allocationsInSteps(const std::string& pressure, int threads, int warmup, int steps, const std::string& motion = "") {
+long allocationsInSteps(const std::string& pressure, int threads, int warmup, int steps, const std::string& motion = "",
+                        const std::string& schemes = "") {
   test::TempCase c("noalloc");
-  writeDamBreak(c, pressure, motion);
+  writeDamBreak(c, pressure, motion, schemes);
   SimulationOptions opt;
   opt.functionObjects = false;
   opt.threads = threads;
@@ -200,6 +202,12 @@ BOOST_AUTO_TEST_CASE(steps_allocate_nothing_with_a_rolling_tank) {
   // The moving walls: their poses, positions and velocities every step.
   const std::string roll = "motion { type rotation; centre (0.4 0); angle \"5*sin(2*pi*t)\"; }";
   BOOST_TEST(allocationsInSteps("solver BiCGSTAB; preconditioner ILU0;", 2, 40, 20, roll) < kSlack);
+}
+
+BOOST_AUTO_TEST_CASE(steps_allocate_nothing_with_the_midpoint_position_update) {
+  // positionUpdate midpoint (docs/method.md 4.1, eq. 7b): its velocity gradient's scratch.
+  BOOST_TEST(allocationsInSteps("solver BiCGSTAB; preconditioner ILU0;", 2, 40, 20, "", "positionUpdate midpoint;\n") <
+             kSlack);
 }
 
 BOOST_AUTO_TEST_CASE(steps_allocate_nothing_with_diagonal) {
