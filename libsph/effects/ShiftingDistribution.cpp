@@ -51,15 +51,16 @@ const char* gradientName(DistributionParameters::Gradient g) {
 
 // The frame of a free or splash particle beside a wall that rises above the water (docs/method.md
 // 6, "beside a dry wall"). Where the surface fit (8.2) holds for i and some wall neighbour j lies
-// beyond the fitted surface, (r_j - r_i) . n_fit > d0 (1/2 - s_i), the detector's normal is tilted
-// away from that wall (its kernel sum reads the dry wall as fluid where the other side is air) and
-// the dry wall pushes i along the surface: i then projects with n_fit and leaves out the wall
-// particles beyond the surface. Returns false (frame unchanged) otherwise.
+// beyond the surface, d0/2 outside i along the fitted normal ((r_j - r_i) . n_fit > d0/2, the
+// surface of eq. 6b), the detector's normal is tilted away from that wall (its kernel sum reads
+// the dry wall as fluid where the other side is air) and the dry wall pushes i along the surface:
+// i then projects with n_fit and leaves out the wall particles beyond the surface. Returns false
+// (frame unchanged) otherwise.
 template <int D>
 bool besideDryWall(const FlowState<D>& s, std::size_t i, Vec<D>& n, double& beyond) {
   if (s.fitDistance.size() != s.size() || !std::isfinite(s.fitDistance[i])) return false;
   const Vec<D>& nFit = s.fitNormal[i];
-  const double surface = s.d0 * (0.5 - s.fitDistance[i]);
+  const double surface = 0.5 * s.d0;
   const auto& nl = s.neighbours;
   for (Index k = nl.begin(i); k < nl.end(i); ++k)
     if (!s.isFluid(nl.j[k]) && -nl.rij(i, k).dot(nFit) > surface) {

@@ -31,7 +31,7 @@
 //
 // Beside a dry wall (a wall that rises above the water, docs/method.md 6): a free or splash
 // particle whose surface fit (docs/method.md 8.2) holds and which has a wall neighbour beyond
-// the fitted surface, (r_j - r_i) . n_fit > d0 (1/2 - s_i), projects with the fitted normal and
+// the surface, (r_j - r_i) . n_fit > d0/2 (the surface of eq. 6b), projects with the fitted normal and
 // leaves those wall particles out of its sum, so that a still tank is a fixed point of the
 // shift (otherwise the dry wall lifted the top corner particles and pushed the surface row
 // along the surface, tests/unit/test_effects_ops.cpp). Vicinity particles are not treated so:
