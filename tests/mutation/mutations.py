@@ -135,6 +135,12 @@ MUTATIONS = [
              [r"^unit\.test_effects_ops$", r"^unit\.test_isph_hydrostatic$"],
              "OPS projects a free particle beside a wall that rises above the water with the detector's "
              "normal and counts the dry wall: the still tank's top corners are lifted"),
+    Mutation("midpointUpdateIsEuler", "libsph/isph/PositionUpdate.cpp",
+             "      if (B.squaredNorm() < 0.25) v = (Mat<D>::Identity() - B).inverse() * v;\n",
+             "      if (B.squaredNorm() < 0.25) v = (Mat<D>::Identity() + B) * v;\n",
+             [r"^unit\.test_isph_positionUpdate$"],
+             "positionUpdate midpoint takes the explicit series' first term (I + dt/2 G) instead of the "
+             "implicit midpoint's inverse: areas are no longer kept"),
     Mutation("pressureGradientSign", "libsph/operators/Ops.cpp",
              "  sumOverNeighbours(nl, &rows, scale, true, out,\n"
              "                    [&](long i, Index k) -> Vec<D> { return (f[nl.j[k]] - f[i]) * pw.gradW[k]; });",

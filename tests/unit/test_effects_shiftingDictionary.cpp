@@ -60,7 +60,7 @@ BOOST_AUTO_TEST_CASE(names_stages_and_needs) {
   BOOST_TEST((ads->stage() == EffectStage::postAdvection));
   BOOST_TEST((xsph->stage() == EffectStage::advection));
   BOOST_TEST(dis->needs().normals);
-  BOOST_TEST(!dis->needs().surfaceFit);
+  BOOST_TEST(dis->needs().surfaceFit);  // its frame beside a dry wall (docs/method.md 6)
   BOOST_TEST((suf->needs().surfaceFit && suf->needs().normals));
   BOOST_TEST(!vol->needs().normals);
   for (auto* e : {dis.get(), vol.get(), suf.get(), ads.get(), xsph.get()})
