@@ -627,6 +627,6 @@ def timestep_study(add):
     add("exactly for a linear field. At maxCo 0.5 it gives a mean of -0.115 % and a mode of -0.117 % (front")
     add("9.95 %); the mean over the run's last 0.05 s goes from -0.259 to -0.108 % (the default at maxCo 0.2:")
     add("-0.089 %). The mode stays four times the default's, so maxCo 0.5 still fails issue 23's density condition.")
-    add("The rule costs one velocity-gradient pass, about 2 % of a step (K&O 20k, 100 steps, one thread:")
-    add("advection 0.22 against 0.01 s).")
+    add("The rule costs one velocity-gradient pass, 1.5-2 % of a step (K&O 20k, 100 steps, one thread:")
+    add("advection 0.11-0.22 against 0.01 s, by host load), and G, 32 B a particle in 2D and 72 B in 3D.")
     add("")

@@ -1,6 +1,7 @@
 // Dummy wall particles: Shepard velocity, the wall normals fluid particles see and the
 // Adami pressure row (docs/method.md 4.2, 11).
 #include "boundaries/WallParticles.hpp"
+#include "operators/Ops.hpp"
 
 #include <algorithm>
 
@@ -85,6 +86,18 @@ AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, const WallContacts<D>& c
   return row;
 }
 
+template <int D>
+void velocityGradientWithShepardWalls(FlowState<D>& s, std::vector<Mat<D>>& out) {
+  const auto& u = s.particles.velocity;
+  const long n = long(s.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) s.uStar[i] = u[i];
+  shepardFluidVelocity(s, s.uStar);
+  Ops<D>::velocityGradient(s.neighbours, s.weights, s.V(), s.uStar, out);
+}
+
+template void velocityGradientWithShepardWalls<2>(FlowState<2>&, std::vector<Mat<2>>&);
+template void velocityGradientWithShepardWalls<3>(FlowState<3>&, std::vector<Mat<3>>&);
 template void shepardFluidVelocity<2>(const FlowState<2>&, std::vector<Vec<2>>&, bool);
 template void shepardFluidVelocity<3>(const FlowState<3>&, std::vector<Vec<3>>&, bool);
 template struct WallContacts<2>;

@@ -5,6 +5,9 @@
 //    water sees no artificial velocity jump at the wall. Outlet particles show the same
 //    average (the velocity's zero normal gradient at an outlet); inlet particles keep
 //    their prescribed velocity (docs/boundaries.md, "Inlets and outlets").
+//  - velocityGradientWithShepardWalls: <grad u> of the fluid's velocity with the walls
+//    showing its Shepard average (the Taylor correction's gradient, docs/method.md 13, and the
+//    midpoint position update's, 4.1 eq. 7b).
 //  - WallContacts: per fluid particle, the wall normal it sees, n_f = sum_w W r_fw /
 //    |sum_w W r_fw| over its wall neighbours (wall particles only, not inlet or outlet
 //    buffers; zero without any), and whether it is lone (no other fluid particle within
@@ -31,6 +34,12 @@ namespace shizuku {
 // outletsOnly: only the outlet particles (the corrector's zero-gradient outlet velocity).
 template <int D>
 void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u, bool outletsOnly = false);
+
+// out(a, b) = d u_a / d x_b (SPH(2) weights of the step) of the fluid's velocity, each wall
+// particle showing the Shepard average of its fluid neighbours' velocity at the current
+// positions. s.uStar is the scratch: it is free once the corrector has used it.
+template <int D>
+void velocityGradientWithShepardWalls(FlowState<D>& s, std::vector<Mat<D>>& out);
 
 template <int D>
 struct WallContacts {

@@ -95,12 +95,7 @@ template <int D>
 void ParticleShifting<D>::velocityGradient(FlowState<D>& s, StageTimers& timers) {
   if (taylor_ == TaylorCorrection::off) return;
   StageTimers::Scope t(timers, timer_);
-  const auto& P = s.particles;
-  const long n = long(s.size());
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) s.uStar[i] = P.velocity[i];
-  shepardFluidVelocity(s, s.uStar);
-  Ops<D>::velocityGradient(s.neighbours, s.weights, s.V(), s.uStar, gradU_);
+  velocityGradientWithShepardWalls(s, gradU_);
 }
 
 template <int D>

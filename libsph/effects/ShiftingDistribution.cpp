@@ -119,7 +119,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     const bool project = cls != SurfaceClass::interior && !deepVicinity;
     Vec<D> ni = nrm.size() == s.size() ? nrm[i] : Vec<D>::Zero();
     double beyond = INFINITY;  // wall particles farther than this along ni are left out
-    if (project && cls != SurfaceClass::vicinity) besideDryWall(s, std::size_t(i), ni, beyond);
+    const bool dry = project && cls != SurfaceClass::vicinity && besideDryWall(s, std::size_t(i), ni, beyond);
     if (project && ni.squaredNorm() < 0.25) continue;
     // Particles without SPH(2) weights fall back to the kernel gradient.
     const G grad = (haveWeights && s.weights.order[i] != 255) ? this->par_.gradient : G::kernel;
@@ -128,7 +128,7 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     for (Index k = nl.begin(i); k < nl.end(i); ++k) {
       const Vec<D> rij = nl.rij(std::size_t(i), k);
       const double r = rij.norm();
-      if (!(r > 0) || (-rij.dot(ni) > beyond && !s.isFluid(nl.j[k]))) continue;
+      if (!(r > 0) || (dry && !s.isFluid(nl.j[k]) && -rij.dot(ni) > beyond)) continue;
       if (ops) {
         double wv, dw;
         s.kernel.eval(r, wv, dw);

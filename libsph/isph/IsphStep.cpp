@@ -172,11 +172,6 @@ void IsphStep<D>::advect() {
   }
   StageTimers::Scope t(timers_, st_.advection);
   positions_.move(s_, du_);
-  if (s_.periodic.any()) {
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i)
-      if (s_.isFluid(i)) s_.periodic.wrap(P.position[i]);
-  }
   if (movingWalls_) movingWalls_->place(P, s_.time + s_.dt);
   s_.exchange(P.position);
 }

@@ -1,15 +1,12 @@
 // The advection stage's position update, eqs. 7 and 7b: see PositionUpdate.hpp.
 #include "isph/PositionUpdate.hpp"
 #include "boundaries/WallParticles.hpp"
-#include "operators/Ops.hpp"
 
 namespace shizuku {
 
 template <int D>
 void PositionUpdate<D>::allocate(std::size_t n) {
-  if (rule_ != Rule::midpoint) return;
-  velocity_.resize(n);
-  gradient_.resize(n);
+  if (rule_ == Rule::midpoint) gradient_.resize(n);
 }
 
 template <int D>
@@ -18,12 +15,8 @@ void PositionUpdate<D>::move(FlowState<D>& s, const std::vector<Vec<D>>& du) {
   const long n = long(s.size());
   const double dt = s.dt;
   const bool extra = !du.empty(), midpoint = rule_ == Rule::midpoint;
-  if (midpoint) {
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) velocity_[i] = P.velocity[i];
-    shepardFluidVelocity(s, velocity_);
-    Ops<D>::velocityGradient(s.neighbours, s.weights, s.V(), velocity_, gradient_);
-  }
+  if (midpoint) velocityGradientWithShepardWalls(s, gradient_);
+  const bool periodic = s.periodic.any();
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     if (!s.isFluid(i)) continue;
@@ -34,6 +27,7 @@ void PositionUpdate<D>::move(FlowState<D>& s, const std::vector<Vec<D>>& du) {
       if (B.squaredNorm() < 0.25) v = (Mat<D>::Identity() - B).inverse() * v;
     }
     P.position[i] += dt * v;
+    if (periodic) s.periodic.wrap(P.position[i]);
   }
 }
 

@@ -26,18 +26,17 @@ class PositionUpdate {
  public:
   enum class Rule { euler, midpoint };
   explicit PositionUpdate(Rule rule = Rule::euler) : rule_(rule) {}
-  Rule rule() const { return rule_; }
   // Sizes the scratch of the midpoint rule (nothing for euler); called when the particle
   // count changes, never inside a step.
   void allocate(std::size_t n);
-  // Moves every fluid particle of s by its displacement over s.dt; du: the extra advection
-  // velocity (XSPH), empty if none.
+  // Moves every fluid particle of s by its displacement over s.dt (wrapped into a periodic
+  // box); du: the extra advection velocity (XSPH), empty if none. The midpoint rule uses s.uStar
+  // as scratch.
   void move(FlowState<D>& s, const std::vector<Vec<D>>& du);
   std::string describe() const;
 
  private:
   Rule rule_;
-  std::vector<Vec<D>> velocity_;  // the fluid's velocity, the walls' Shepard velocity
   std::vector<Mat<D>> gradient_;  // G_i
 };
 

@@ -130,8 +130,8 @@ MUTATIONS = [
              "the backward sweep visits the interface rows last, so the smoother is no longer the "
              "forward sweep's reverse (not symmetric)"),
     Mutation("opsIgnoresDryWall", "libsph/effects/ShiftingDistribution.cpp",
-             "    if (project && cls != SurfaceClass::vicinity) besideDryWall(s, std::size_t(i), ni, beyond);\n",
-             "",
+             "    const bool dry = project && cls != SurfaceClass::vicinity && besideDryWall(s, std::size_t(i), ni, beyond);\n",
+             "    const bool dry = false;\n",
              [r"^unit\.test_effects_ops$", r"^unit\.test_isph_hydrostatic$"],
              "OPS projects a free particle beside a wall that rises above the water with the detector's "
              "normal and counts the dry wall: the still tank's top corners are lifted"),
