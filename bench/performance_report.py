@@ -20,14 +20,14 @@ def f(x, d=3):
 
 
 def stages(row):
-    """Top-level stage times (names with a '/' are parts of the stage before the '/',
-    already inside its time)."""
+    """Stage times by name. A name with a '/' (shifting/distribution) is a part of the
+    stage before the '/' timed on its own: the solver's table lists it beside that stage,
+    not inside its time, so every entry counts."""
     out = {}
     for kv in (row.get("stages") or "").split(";"):
         if "=" in kv:
             k, v = kv.split("=")
-            if "/" not in k:
-                out[k] = float(v)
+            out[k] = float(v)
     return out
 
 

@@ -289,7 +289,9 @@ inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<
     double q[n2];
     for (int a = 0; a < D; ++a) q[a] = s[a] * s[a];
     for (int k = 0; k < T::numOff; ++k) q[D + k] = s[T::offA[k]] * s[T::offB[k]];
-    Vec<D> g;
+    // Written component by component: a Vec<D> assembled in scalars and stored whole made
+    // the compiler spill it and reload it as a vector, a store-forwarding stall per pair.
+    double* g = out.gradW[p].data();
     double ls = 0, lq = 0;
     for (int a = 0; a < D; ++a) {
       double gs = 0, gq = 0;
@@ -299,7 +301,6 @@ inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<
       ls += ell[a] * s[a];
     }
     for (int m = 0; m < n2; ++m) lq += ell[D + m] * q[m];
-    out.gradW[p] = g;
     out.lapW[p] = kappa * ls + beta * lq;
   }
   return true;
