@@ -2,6 +2,8 @@
 #include "effects/ParticleShifting.hpp"
 #include "boundaries/WallParticles.hpp"
 #include "core/Parameter.hpp"
+#include "parallel/Communicator.hpp"
+#include <cmath>
 #include "effects/ShiftCap.hpp"
 
 namespace shizuku {
@@ -12,6 +14,9 @@ const ParameterGroup shifting("system/sphSchemes: shifting",
     "Particle shifting, eq. 10: its terms (sub-dictionaries distribution, volumeCorrection, surfaceFitting), the cap "
     "and the Taylor correction (docs/method.md 6-8).");
 const ScalarParameter maxShift = shifting.scalar("maxShift", dim::none, "cap on |dr|, times h").def(0.1).above(0).max(1);
+const ScalarParameter maxCoPerPass = shifting.scalar("maxCoPerPass", dim::none,
+    "a step of Courant number Co above this shifts in ceil(Co / maxCoPerPass) passes, together Co / maxCoPerPass "
+    "times one pass (docs/method.md 6)").def(0.2).above(0);
 const OptionParameter taylorCorrection = shifting.option("taylorCorrection",
     {"on", "yes", "true", "off", "no", "false", "everywhere", "belowSurface", "interior"},
     "u += <grad u> dr on: interior and vicinity (on = belowSurface), interior, everywhere, or off").def("on");
@@ -33,6 +38,7 @@ std::unique_ptr<ParticleShifting<D>> ParticleShifting<D>::create(const Dictionar
       p->terms_.emplace_back(t);
     }
   p->maxShift_ = key::maxShift.read(*sh);
+  p->maxCoPerPass_ = key::maxCoPerPass.read(*sh);
   const std::string t = key::taylorCorrection.read(*sh);
   if (t == "off" || t == "no" || t == "false") p->taylor_ = TaylorCorrection::off;
   else if (t == "everywhere") p->taylor_ = TaylorCorrection::everywhere;
@@ -85,7 +91,7 @@ std::string ParticleShifting<D>::describe() const {
     case TaylorCorrection::belowSurface: taylor = ", Taylor-corrected velocity on interior and vicinity particles"; break;
     case TaylorCorrection::everywhere: taylor = ", Taylor-corrected velocity on every fluid particle"; break;
   }
-  return cat("shift cap |dr| <= ", maxShift_, " h", taylor);
+  return cat("shift cap |dr| <= ", maxShift_, " h per pass, one pass per Courant number ", maxCoPerPass_, taylor);
 }
 
 // The Shepard weights at r' rather than after ADS: with W_wf taken after ADS had pushed
@@ -99,28 +105,55 @@ void ParticleShifting<D>::velocityGradient(FlowState<D>& s, StageTimers& timers)
 }
 
 template <int D>
+ShiftPasses ParticleShifting<D>::passes(const FlowState<D>& s) const {
+  double umax = 0;
+  const long n = long(s.size());
+#pragma omp parallel for schedule(static) reduction(max : umax)
+  for (long i = 0; i < n; ++i)
+    if (s.isFluid(i)) umax = std::max(umax, s.particles.velocity[i].norm());
+  // Every rank takes the same passes (the step's Courant number over all ranks).
+  const double co = s.dt * Communicator::world().max(umax) / s.h, ratio = co / maxCoPerPass_;
+  if (!(ratio > 1)) return {1, 1.0};
+  const int count = int(std::ceil(ratio));
+  return {count, ratio / count};
+}
+
+template <int D>
+void ParticleShifting<D>::beginStep(const FlowState<D>& s, StageTimers& timers) {
+  StageTimers::Scope t(timers, timer_);
+  passes_ = passes(s);
+}
+
+template <int D>
 void ParticleShifting<D>::apply(FlowState<D>& s, StageTimers& timers) {
   auto& P = s.particles;
   const long n = long(s.size());
-  {
+  const ShiftPasses pass = passes_;
+  for (int k = 0; k < pass.count; ++k) {
+    {
+      StageTimers::Scope t(timers, timer_);
+      if (k > 0) s.exchange(P.position);  // the terms read the neighbours' shifted positions
+      s.computeDensity();
+#pragma omp parallel for schedule(static)
+      for (long i = 0; i < n; ++i) dr_[i].setZero();
+    }
+    for (std::size_t m = 0; m < terms_.size(); ++m) {
+      StageTimers::Scope t(timers, termTimer_[m]);
+      terms_[m]->addShift(s, dr_);
+    }
     StageTimers::Scope t(timers, timer_);
-    s.computeDensity();
+    if (pass.scale != 1.0)
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) dr_[i].setZero();
-  }
-  for (std::size_t k = 0; k < terms_.size(); ++k) {
-    StageTimers::Scope t(timers, termTimer_[k]);
-    terms_[k]->addShift(s, dr_);
-  }
-  StageTimers::Scope t(timers, timer_);
-  capShift(dr_, maxShift_ * s.h);
+      for (long i = 0; i < n; ++i) dr_[i] *= pass.scale;
+    capShift(dr_, maxShift_ * s.h);
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    if (!s.isFluid(i)) { P.shift[i].setZero(); continue; }
-    P.position[i] += dr_[i];
-    if (s.periodic.any()) s.periodic.wrap(P.position[i]);
-    if (taylorCorrected(P.surfaceClass(i))) P.velocity[i] += gradU_[i] * dr_[i];
-    P.shift[i] = dr_[i];
+    for (long i = 0; i < n; ++i) {
+      if (!s.isFluid(i)) { P.shift[i].setZero(); continue; }
+      P.position[i] += dr_[i];
+      if (s.periodic.any()) s.periodic.wrap(P.position[i]);
+      if (taylorCorrected(P.surfaceClass(i))) P.velocity[i] += gradU_[i] * dr_[i];
+      P.shift[i] = k == 0 ? dr_[i] : Vec<D>(P.shift[i] + dr_[i]);
+    }
   }
 }
 

@@ -5,7 +5,7 @@
 // particles where the velocity gradient is two-sided. One object owns the terms, the
 // cap and the correction; a case without shifting terms builds none of it.
 // Reads (system/sphSchemes, shifting): the terms' sub-dictionaries distribution, volumeCorrection,
-// surfaceFitting (keys in each term's header); maxShift (times h) and taylorCorrection
+// surfaceFitting (keys in each term's header); maxShift (times h), maxCoPerPass and taylorCorrection
 // on|belowSurface|interior|everywhere|off (on = belowSurface: interior and vicinity particles;
 // on free-surface and splash particles the one-sided gradient is unreliable and the product
 // pumps energy, docs/shifting.md); declared in ParticleShifting.cpp.
@@ -14,6 +14,12 @@
 #include "effects/Effect.hpp"
 
 namespace shizuku {
+
+// How a step's shift is applied: `count` passes, each the terms' shift times `scale`.
+struct ShiftPasses {
+  int count = 1;
+  double scale = 1.0;
+};
 
 template <int D>
 class ParticleShifting {
@@ -35,8 +41,18 @@ class ParticleShifting {
   // of r'. Nothing without a Taylor correction.
   void velocityGradient(FlowState<D>& s, StageTimers& timers);
   // dr = cap(sum of the terms); r += dr; u += <grad u> dr where Taylor-corrected, with
-  // the <grad u> of this step's velocityGradient.
+  // the <grad u> of this step's velocityGradient; in the passes beginStep chose.
   void apply(FlowState<D>& s, StageTimers& timers);
+  // The passes of a step of Courant number Co = dt max|u| / h (fluid particles): one while
+  // Co <= maxCoPerPass; above, ceil(Co / maxCoPerPass) passes, each scaled by
+  // Co / (count maxCoPerPass), so that a step shifts Co / maxCoPerPass times one pass and the
+  // shifting per unit time stays that of a step of Courant number maxCoPerPass
+  // (docs/method.md 6, "Larger steps").
+  ShiftPasses passes(const FlowState<D>& s) const;
+  // Chooses this step's passes from the velocities it starts from (those the time-step
+  // control saw: a step of maxCo <= maxCoPerPass takes one pass) and s.dt.
+  void beginStep(const FlowState<D>& s, StageTimers& timers);
+  int stepPasses() const { return passes_.count; }
 
   const std::vector<std::unique_ptr<ShiftTerm<D>>>& terms() const { return terms_; }
   double maxShift() const { return maxShift_; }
@@ -48,6 +64,8 @@ class ParticleShifting {
   std::vector<int> termTimer_;
   int timer_ = -1;
   double maxShift_ = 0.1;  // times h
+  double maxCoPerPass_ = 0.2;
+  ShiftPasses passes_;
   TaylorCorrection taylor_ = TaylorCorrection::belowSurface;
   std::vector<Vec<D>> dr_;
   std::vector<Mat<D>> gradU_;

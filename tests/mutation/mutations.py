@@ -135,6 +135,11 @@ MUTATIONS = [
              [r"^unit\.test_effects_ops$", r"^unit\.test_isph_hydrostatic$"],
              "OPS projects a free particle beside a wall that rises above the water with the detector's "
              "normal and counts the dry wall: the still tank's top corners are lifted"),
+    Mutation("shiftPassesIgnored", "libsph/effects/ParticleShifting.cpp",
+             "  return {count, ratio / count};\n",
+             "  return {1, 1.0};\n",
+             [r"^unit\.test_effects_shiftPasses$"],
+             "a step of any Courant number shifts in one pass: the shifting per unit time falls as the step grows"),
     Mutation("midpointUpdateIsEuler", "libsph/isph/PositionUpdate.cpp",
              "      if (B.squaredNorm() < 0.25) v = (Mat<D>::Identity() - B).inverse() * v;\n",
              "      if (B.squaredNorm() < 0.25) v = (Mat<D>::Identity() + B) * v;\n",
