@@ -113,8 +113,10 @@ ShiftPasses ParticleShifting<D>::passes(const FlowState<D>& s) const {
     if (s.isFluid(i)) umax = std::max(umax, s.particles.velocity[i].norm());
   // Every rank takes the same passes (the step's Courant number over all ranks).
   const double co = s.dt * Communicator::world().max(umax) / s.h, ratio = co / maxCoPerPass_;
-  if (!(ratio > 1)) return {1, 1.0};
-  const int count = int(std::ceil(ratio));
+  // A step the CFL limit set has Co = maxCo up to rounding: at maxCo = maxCoPerPass it is one
+  // pass, at twice it two, not one more for the last bit.
+  const int count = std::isfinite(ratio) ? int(std::ceil(ratio - 1e-9)) : 1;
+  if (count <= 1) return {1, 1.0};
   return {count, ratio / count};
 }
 

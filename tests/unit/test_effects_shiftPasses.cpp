@@ -95,6 +95,15 @@ void passCounts() {
     BOOST_TEST(p.count == c.count, "Co " << c.co);
     BOOST_TEST(p.scale == c.scale, boost::test_tools::tolerance(1e-9));
   }
+  // Steps the CFL limit sets, dt = maxCo h / max|u| (TimeLoop), have Co = maxCo up to
+  // rounding: maxCo 0.2 is one pass and 0.4 two, for any speed.
+  for (const double u : {0.3, 1.7, 2.9, 7.3, 11.1}) {
+    for (auto& v : f.s.particles.velocity) v = u * Vec<D>::Unit(0);
+    f.s.dt = 0.2 * f.s.h / u;
+    BOOST_TEST(shifting->passes(f.s).count == 1, "u " << u);
+    f.s.dt = 0.4 * f.s.h / u;
+    BOOST_TEST(shifting->passes(f.s).count == 2, "u " << u);
+  }
   // A fluid at rest takes one pass; so does every step when maxCoPerPass is out of reach.
   for (auto& v : f.s.particles.velocity) v.setZero();
   BOOST_TEST(shifting->passes(f.s).count == 1);
