@@ -115,7 +115,8 @@ def write(csvPath, mdPath, quick):
     add("the CPU-time columns are the better guide).")
     add("")
     add("The parts are rerun one at a time (`--only`), so their rows can come from different days and hosts:")
-    add("throughput and timestep were last run late on 2026-12-05 at the commit named above (load 1.4-1.9:")
+    add("timestep was last run late on 2026-12-05 at the commit named above, throughput just before at 30c5dbf")
+    add("(the same code for its fixed-step runs; load 1.4-1.9:")
     add("other work shared the host), with the shift's passes and the weights stage's stall removed; scaling")
     add("and threeD earlier that day (commit cdc98cd), with the smoother")
     add("that sweeps the rows coupling the threads' blocks last; solvers earlier that day, after the AMG's 2D")
@@ -204,7 +205,7 @@ def write(csvPath, mdPath, quick):
                if best and best is not ad else "")
             + f" | {'yes' if best and sps(best) <= 27 else 'no'} | larger steps alone grow the interior "
             "density-error mode (the arrangement the shift restores per step; 'How large a step'); with "
-            "`positionUpdate midpoint` and the shift's passes (`maxCoPerPass`, on by default) maxCo 0.5 and 0.8 keep "
+            "`positionUpdate midpoint` and the shift's passes (`maxCoPerPass`, on by default) maxCo 0.5 to 1.0 keep "
             "the default's front error and mode, but the impact pressure does not (at maxCo 0.5 it arrives 7 % later): "
             "the default stays 0.2. What a step costs: row 1 "
             "(an adaptive step costs about twice a throughput step: at maxCo 0.2 its PPE took 9-11 iterations, "
@@ -705,8 +706,8 @@ def timestep_study(add):
     add("| maxCo 0.5, midpoint, passes | 364 / 364 | 10.00 / 10.00 | -0.041 / -0.041 | -0.080 / -0.081 |")
     add("| maxCo 0.6, midpoint, passes | 303 | 9.93 | -0.033 | -0.095 |")
     add("| maxCo 0.8, Euler, passes | 236 | 10.22 | -0.126 | -0.195 |")
-    add("| maxCo 0.8, midpoint, passes | 235 | 9.96 | -0.011 | -0.091 |")
-    add("| maxCo 1.0, midpoint, passes | 194 | 10.23 | -0.009 | -0.097 |")
+    add("| maxCo 0.8, midpoint, passes | 236 | 9.95 | -0.015 | -0.091 |")
+    add("| maxCo 1.0, midpoint, passes | 195 | 10.13 | -0.010 | -0.091 |")
     add("")
     add("With both the midpoint update and the passes, maxCo 0.5 keeps the default's front error and density")
     add("error (the mode inside the default's two-trajectory spread, the mean the same), and so do 0.6 to 1.0")
