@@ -192,7 +192,9 @@ void IsphStep<D>::correctPositions() {
 
 template <int D>
 void IsphStep<D>::shift() {
-  if (effects_.shifting) effects_.shifting->apply(s_, timers_);
+  if (!effects_.shifting) return;
+  effects_.shifting->apply(s_, timers_);
+  report_.shiftPasses = effects_.shifting->stepPasses();
 }
 
 template <int D>

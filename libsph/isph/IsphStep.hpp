@@ -45,6 +45,7 @@ struct StepReport {
   long ppeStandardRows = 0;   // Laplacian rows that fell back to the standard weights
   double maxSpeed = 0;
   long adsCount = -1;
+  int shiftPasses = 1;        // the shift's passes (docs/method.md 6, eq. 10b)
   std::string dtLimiter = "fixed";
 };
 

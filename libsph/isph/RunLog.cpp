@@ -25,6 +25,7 @@ std::string progressLine(const ProgressInfo& p, const StepReport& r) {
              r.ppeStandardRows ? cat(" (", r.ppeStandardRows, " std rows)") : "", "  max|U| = ", r.maxSpeed,
              "  rhoErr rms = ", std::setprecision(3), p.densityErrorRms, std::setprecision(6), " %",
              r.adsCount >= 0 ? cat("  ADS ", r.adsCount) : "",
+             r.shiftPasses > 1 ? cat("  shift passes ", r.shiftPasses) : "",
              p.released + p.captured > 0 ? cat("  in ", p.released, " out ", p.captured) : "",
              p.removed > 0 ? cat("  removed ", p.removed, " (", std::setprecision(3), 100 * p.removedFraction,
                                  std::setprecision(6), " %)") : "",

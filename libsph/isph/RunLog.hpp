@@ -24,7 +24,7 @@ struct ProgressInfo {
   long released = 0, captured = 0;  // particles inlets released and outlets captured so far
 };
 
-// "step N  t = ..  dt = .. (limiter)  PPE .. it, res ..  max|U| = ..  rhoErr rms = .. %  ADS ..  in N out N  removed N (f %)  leaks N  x% done, ETA .."
+// "step N  t = ..  dt = .. (limiter)  PPE .. it, res ..  max|U| = ..  rhoErr rms = .. %  ADS ..  shift passes N  in N out N  removed N (f %)  leaks N  x% done, ETA .."
 std::string progressLine(const ProgressInfo& p, const StepReport& r);
 
 struct RunSummary {

@@ -38,3 +38,42 @@ BOOST_AUTO_TEST_CASE(uniform_stream_takes_courant_limited_steps) {
   BOOST_TEST(sim.state().time == 0.024, boost::test_tools::tolerance(1e-9));
   BOOST_TEST(sim.state().dt == 0.0024, boost::test_tools::tolerance(1e-6));
 }
+
+// The shift's passes (docs/method.md 6, eq. 10b) in the step: the same stream with OPS
+// shifting at maxCo 0.2 takes one pass a step; at maxCo 0.5 every step is Co = 0.5, three
+// passes, and the progress line says so.
+#include "isph/RunLog.hpp"
+
+namespace {
+int lastStepPasses(double maxCo, std::string& line) {
+  test::TempCase c("uniformStreamShifted");
+  c.file("system/controlDict",
+         "endTime 0.024; deltaT 0.01; adjustTimeStep yes; maxCo " + std::to_string(maxCo) + "; maxDeltaT 1;\n"
+         "writeControl timeStep; writeInterval 1000; progressInterval 1000;\n");
+  c.file("system/particlesDict",
+         "spacing 0.02;\nperiodic { min (0 0); max (0.4 0.4); directions (x y); }\n"
+         "regions {\n water { type fluid; shape box; min (0 0); max (0.4 0.4);\n"
+         "   velocity { type uniform; value (2 0); } }\n}\n");
+  c.file("system/sphSchemes", "derivatives SPH2;\nshifting { distribution { type OPS; } }\n");
+  c.file("system/sphSolution", "pressure { solver UMFPACK; }\n");
+  c.file("constant/physicalProperties", "rho 1000;\n");
+  SimulationOptions opt;
+  opt.functionObjects = false;
+  Log::get().quiet = true;
+  Simulation<2> sim(c.dir(), opt);
+  const int status = sim.run();
+  Log::get().quiet = false;
+  BOOST_TEST_REQUIRE(status == 0);
+  ProgressInfo p;
+  line = progressLine(p, sim.lastStep());
+  return sim.lastStep().shiftPasses;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(large_steps_shift_in_passes) {
+  std::string line;
+  BOOST_TEST(lastStepPasses(0.2, line) == 1);
+  BOOST_TEST(line.find("shift passes") == std::string::npos, line);
+  BOOST_TEST(lastStepPasses(0.5, line) == 3);
+  BOOST_TEST(line.find("shift passes 3") != std::string::npos, line);
+}
