@@ -2,7 +2,6 @@
 #include "effects/ParticleShifting.hpp"
 #include "boundaries/WallParticles.hpp"
 #include "core/Parameter.hpp"
-#include "parallel/Communicator.hpp"
 #include <cmath>
 #include "effects/ShiftCap.hpp"
 
@@ -105,25 +104,13 @@ void ParticleShifting<D>::velocityGradient(FlowState<D>& s, StageTimers& timers)
 }
 
 template <int D>
-ShiftPasses ParticleShifting<D>::passes(const FlowState<D>& s) const {
-  double umax = 0;
-  const long n = long(s.size());
-#pragma omp parallel for schedule(static) reduction(max : umax)
-  for (long i = 0; i < n; ++i)
-    if (s.isFluid(i)) umax = std::max(umax, s.particles.velocity[i].norm());
-  // Every rank takes the same passes (the step's Courant number over all ranks).
-  const double co = s.dt * Communicator::world().max(umax) / s.h, ratio = co / maxCoPerPass_;
+ShiftPasses ParticleShifting<D>::passes(double courant) const {
+  const double ratio = courant / maxCoPerPass_;
   // A step the CFL limit set has Co = maxCo up to rounding: at maxCo = maxCoPerPass it is one
   // pass, at twice it two, not one more for the last bit.
   const int count = std::isfinite(ratio) ? int(std::ceil(ratio - 1e-9)) : 1;
   if (count <= 1) return {1, 1.0};
   return {count, ratio / count};
-}
-
-template <int D>
-void ParticleShifting<D>::beginStep(const FlowState<D>& s, StageTimers& timers) {
-  StageTimers::Scope t(timers, timer_);
-  passes_ = passes(s);
 }
 
 template <int D>

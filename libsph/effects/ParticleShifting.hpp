@@ -48,10 +48,11 @@ class ParticleShifting {
   // Co / (count maxCoPerPass), so that a step shifts Co / maxCoPerPass times one pass and the
   // shifting per unit time stays that of a step of Courant number maxCoPerPass
   // (docs/method.md 6, "Larger steps").
-  ShiftPasses passes(const FlowState<D>& s) const;
-  // Chooses this step's passes from the velocities it starts from (those the time-step
-  // control saw: a step of maxCo <= maxCoPerPass takes one pass) and s.dt.
-  void beginStep(const FlowState<D>& s, StageTimers& timers);
+  ShiftPasses passes(double courant) const;
+  // Chooses this step's passes from its Courant number, taken with the largest fluid speed of
+  // the state it starts from (the one the time-step control limits: a step of maxCo <=
+  // maxCoPerPass takes one pass).
+  void beginStep(double courant) { passes_ = passes(courant); }
   int stepPasses() const { return passes_.count; }
 
   const std::vector<std::unique_ptr<ShiftTerm<D>>>& terms() const { return terms_; }

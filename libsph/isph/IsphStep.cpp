@@ -200,7 +200,7 @@ void IsphStep<D>::shift() {
 template <int D>
 void IsphStep<D>::advance(double dt) {
   s_.dt = dt;
-  if (effects_.shifting) effects_.shifting->beginStep(s_, timers_);
+  if (effects_.shifting) effects_.shifting->beginStep(dt * report_.maxSpeed / s_.h);
   // A moving wall shows the fluid its velocity at the step's end (docs/method.md 11.1).
   if (movingWalls_) movingWalls_->prescribeVelocity(s_.particles, s_.time + dt);
   predict();

@@ -43,7 +43,8 @@ struct StepReport {
   LinearSolveResult ppe;
   long ppeUnknowns = 0;
   long ppeStandardRows = 0;   // Laplacian rows that fell back to the standard weights
-  double maxSpeed = 0;
+  double maxSpeed = 0;        // largest fluid |u| over all ranks, of the state after the step (the
+                              // time loop's health check): the next step's CFL limit and shift passes
   long adsCount = -1;
   int shiftPasses = 1;        // the shift's passes (docs/method.md 6, eq. 10b)
   std::string dtLimiter = "fixed";

@@ -42,12 +42,10 @@ double TimeLoop<D>::chooseDeltaT(double previous, double nextWrite) {
   choice_.clear();
   choice_.add({dt, "fixed"});
   if (rc_.adjustTimeStep) {
-    double umax = 0;
-    for (std::size_t i = 0; i < s_.size(); ++i)
-      if (s_.isFluid(i)) umax = std::max(umax, s_.particles.velocity[i].norm());
-    // Every rank takes the same step: the limits over all ranks' particles.
+    // Every rank takes the same step: the limits over all ranks' particles (the fluid's
+    // largest speed is the health check's, over all ranks, of the state the step starts from).
     const auto& world = Communicator::world();
-    umax = world.max(umax);
+    const double umax = report.maxSpeed;
     TimeStepLimit effects = step_.effects().timeStepLimit(s_);
     effects.dt = world.min(effects.dt);
     // Moving walls: their Courant number as the fluid's, their acceleration as a force's
