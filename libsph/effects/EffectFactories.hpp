@@ -9,6 +9,7 @@ namespace shizuku {
 template <int D> std::unique_ptr<Effect<D>> makeGravity(const Dictionary& dict, const FlowState<D>& s);
 template <int D> std::unique_ptr<Effect<D>> makeDampingZone(const Dictionary& dict, const FlowState<D>& s);
 template <int D> std::unique_ptr<Effect<D>> makeViscosity(const Dictionary& dict, const FlowState<D>& s);
+template <int D> std::unique_ptr<Effect<D>> makeWallFriction(const Dictionary& dict, const FlowState<D>& s);
 template <int D> std::unique_ptr<Effect<D>> makePressureStabilization(const Dictionary& dict, const FlowState<D>& s);
 template <int D> std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& dict, const FlowState<D>& s);
 template <int D> std::unique_ptr<Effect<D>> makeADS(const Dictionary& dict, const FlowState<D>& s);

@@ -46,6 +46,7 @@ template <int D>
 void registerBuiltinEffects(EffectRegistry<D>& r) {
   r.add("gravity", makeGravity<D>);
   r.add("viscosity", makeViscosity<D>);
+  r.add("wallFriction", makeWallFriction<D>);
   r.add("dampingZone", makeDampingZone<D>);
   r.add("pressureStabilization", makePressureStabilization<D>);
   r.add("xsph", makeXSPH<D>);

@@ -24,6 +24,7 @@ EffectSet<D> EffectSet<D>::build(const Dictionary* gravity, const Dictionary& pr
   if (gravity) adopt(reg.create("gravity", *gravity, s), set.forces, *gravity, "value");
   if (nu > 0) adopt(reg.create("viscosity", props, s), set.forces, props, "nu");
   else props.markRead("wallCondition");
+  if (props.subDictPtr("wallFriction")) adopt(reg.create("wallFriction", props, s), set.forces, props, "wallFriction");
   if (const Dictionary* d = sch.subDictPtr("dampingZone")) adopt(reg.create("dampingZone", *d, s), set.forces, sch, "dampingZone");
   if (const Dictionary* d = sch.subDictPtr("pressureStabilization"))
     adopt(reg.create("pressureStabilization", *d, s), set.pressureSources, sch, "pressureStabilization");

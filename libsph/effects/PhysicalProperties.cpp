@@ -14,7 +14,7 @@ const ScalarParameter rho = properties.scalar("rho", dim::density, "density").re
 const ScalarParameter nu = properties.scalar("nu", dim::kinematicViscosity, "kinematic viscosity (0: no viscous term is built)")
     .def(0).min(0);
 const OptionParameter wallCondition = properties.option("wallCondition", {"noSlip", "slip"},
-    "what the walls show the viscous term: the no-slip mirror velocity or free slip").def("noSlip");
+    "what the walls show the viscous term: the no-slip mirror velocity or free slip (slip, and only slip, with wallFriction)").def("noSlip");
 const ParameterGroup gravity("constant/g", "Gravity (file absent: no body force is built).");
 const VectorParameter g = gravity.vector("value", dim::acceleration, "gravitational acceleration").required();
 }  // namespace key
@@ -24,7 +24,17 @@ PhysicalProperties readPhysicalProperties(const Dictionary& d) {
   PhysicalProperties p;
   p.rho = key::rho.read(d);
   p.nu = key::nu.read(d);
-  p.walls = key::wallCondition.read(d) == "noSlip" ? WallVelocity::noSlip : WallVelocity::freeSlip;
+  if (d.subDictPtr("wallFriction")) {
+    // The law of the wall gives the walls' whole stress (WallFriction.cpp): the viscous term
+    // sees free-slip walls, and a no-slip mirror would add the laminar stress a second time.
+    if (d.found("wallCondition") && key::wallCondition.read(d) == "noSlip")
+      d.error("wallCondition", "wallFriction gives the walls' shear stress; with it the viscous term needs "
+                               "wallCondition slip (the default)");
+    d.markRead("wallCondition");
+    p.walls = WallVelocity::freeSlip;
+  } else {
+    p.walls = key::wallCondition.read(d) == "noSlip" ? WallVelocity::noSlip : WallVelocity::freeSlip;
+  }
   return p;
 }
 

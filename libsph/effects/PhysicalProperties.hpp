@@ -1,5 +1,6 @@
 // The physical constants of a case, declared once and read by everything that needs them:
-// the set-up (rho, nu, g), the viscosity effect (nu, wallCondition) and the gravity effect (g).
+// the set-up (rho, nu, g), the viscosity effect (nu, wallCondition), the wall friction (nu) and
+// the gravity effect (g). With wallFriction { } the walls show the viscous term free slip.
 // Reads: constant/physicalProperties rho (kg/m^3, required), nu (m^2/s, 0: no viscous term),
 //        wallCondition noSlip|slip; constant/g value (m/s^2, required when the file exists).
 #pragma once
