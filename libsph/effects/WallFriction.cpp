@@ -26,7 +26,7 @@ namespace shizuku {
 double frictionVelocity(double U, double y, double nu, double roughness) {
   if (!(U > 0)) return 0;
   const double laminar = std::sqrt(nu * U / y);
-  if (roughness == 0 && y * laminar / nu <= 11.0) return laminar;
+  if (y * laminar / nu <= 11.0) return laminar;  // the viscous sublayer: hydraulically smooth
   double us = laminar;
   for (int it = 0; it < 100; ++it) {
     const double arg = y / (nu / (9 * us) + roughness / 30);

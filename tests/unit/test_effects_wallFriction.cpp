@@ -111,6 +111,8 @@ BOOST_AUTO_TEST_CASE(viscous_sublayer_and_fully_rough_limit) {
     const double usRough = frictionVelocity(2.0, 0.01, 1e-14, ks);
     BOOST_TEST(std::abs(usRough - kVonKarman * 2.0 / std::log(30 * 0.01 / ks)) <= 1e-9 * usRough);
   }
+  // Slow flow over a rough wall stays in the viscous sublayer: the laminar stress, not less.
+  BOOST_TEST(std::abs(frictionVelocity(1e-4, 5e-3, nu, 1e-3) - std::sqrt(nu * 1e-4 / 5e-3)) <= 1e-15);
   // Roughness raises the stress over the smooth wall's.
   BOOST_TEST(frictionVelocity(2.0, 0.01, nu, 1e-3) > frictionVelocity(2.0, 0.01, nu, 0));
   BOOST_TEST(frictionVelocity(0.0, 0.01, nu, 0) == 0.0);
