@@ -3,10 +3,12 @@
 // first row of water along every wall, as the wall functions of finite-volume codes supply
 // the wall's stress at the first cell. For a fluid particle f whose nearest wall particle is
 // closer than 1.5 d0 (the first row):
-//   n_f = sum_w W_fw r_fw / |sum_w W_fw r_fw|   (the wall normal f sees, into the fluid)
-//   y_f = min_w n_f . r_fw - d0/2               (distance from the wall face, at least d0/4)
-//   u_t = (u_f - U_w) - n_f (n_f . (u_f - U_w)) (velocity along the wall, U_w of the nearest
-//                                                wall particle)
+//   n_f = sum_w W_fw r_fw / |sum_w W_fw r_fw|   (the wall normal f sees, into the fluid: that
+//                                                of the wall rows, eq. 11a, WallContacts)
+//   y_f = n_f . r_fw* - d0/2                    (distance from the wall face, at least d0/4;
+//                                                w* the nearest wall particle)
+//   u_t = (u_f - U_w*) - n_f (n_f . (u_f - U_w*)) (velocity along the wall)
+// all from one pass over f's neighbours.
 //   a_f = -min(u_tau(|u_t|, y_f)^2 / d0, |u_t| / dt) u_t / |u_t|
 // The stress acts on the particle's share of the wall, d0^(D-1), and d0 is the particle's
 // thickness V / d0^(D-1). The cap at |u_t| / dt stops the explicit step from reversing the
@@ -24,13 +26,14 @@
 namespace shizuku {
 
 double frictionVelocity(double U, double y, double nu, double roughness) {
+  constexpr double kE = 2.718281828459045;  // below it the log layer has no room
   if (!(U > 0)) return 0;
   const double laminar = std::sqrt(nu * U / y);
   if (y * laminar / nu <= 11.0) return laminar;  // the viscous sublayer: hydraulically smooth
   double us = laminar;
   for (int it = 0; it < 100; ++it) {
     const double arg = y / (nu / (9 * us) + roughness / 30);
-    const double next = arg > std::exp(1.0) ? kVonKarman * U / std::log(arg) : kVonKarman * U;
+    const double next = arg > kE ? kVonKarman * U / std::log(arg) : kVonKarman * U;
     if (std::abs(next - us) <= 1e-14 * next) return next;
     us = next;
   }
@@ -80,10 +83,7 @@ class WallFriction final : public ForceEffect<D> {
       }
       if (!(nearest < 1.5 * d0) || sum.squaredNorm() == 0) continue;
       const Vec<D> normal = sum.normalized();
-      double y = HUGE_VAL;
-      for (Index k = nl.begin(f); k < nl.end(f); ++k)
-        if (P.isWall(std::size_t(nl.j[k]))) y = std::min(y, normal.dot(nl.rij(std::size_t(f), k)));
-      y = std::max(y - 0.5 * d0, 0.25 * d0);
+      const double y = std::max(normal.dot(nl.rij(std::size_t(f), nearestPair)) - 0.5 * d0, 0.25 * d0);
       const Vec<D> rel = P.velocity[f] - P.velocity[nl.j[nearestPair]];
       const Vec<D> along = rel - normal * normal.dot(rel);
       const double U = along.norm();

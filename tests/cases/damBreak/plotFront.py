@@ -22,6 +22,8 @@ import sys
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "utilities"))
+import shizukuPost  # noqa: E402
 A, G = 0.2, 9.81
 T_MAX = 3.0
 OFFSET = 0.175
@@ -36,12 +38,10 @@ def data(name, keep=lambda row: True, cols=(0, 1)):
 def front(case):
     with open(os.path.join(case, "system", "particlesDict")) as f:
         d0 = float(re.search(r"(?m)^\s*spacing\s+([^;\s]+)", f.read()).group(1))
-    # rows: time (min_x min_y ...) (max_x max_y ...)
-    with open(os.path.join(case, "postProcessing", "front", "0", "extent.dat")) as f:
-        rows = [line.replace("(", " ").replace(")", " ").split() for line in f if not line.startswith("#")]
-    dim = (len(rows[0]) - 1) // 2
+    names, _, rows = shizukuPost.read_tokens(os.path.join(case, "postProcessing", "front", "0", "extent.dat"))
+    i = names.index("max")
     t = np.array([float(r[0]) for r in rows])
-    x = np.array([float(r[1 + dim]) for r in rows])
+    x = np.array([float(r[i].strip("()").split()[0]) for r in rows])
     return d0, t * math.sqrt(2 * G / A), (x + d0 / 2) / A
 
 
