@@ -18,7 +18,7 @@ const ParameterGroup schemes("system/sphSchemes", "The numerical scheme (each ef
 const OptionParameter derivatives = schemes.option("derivatives", {"SPH2", "corrected", "standard"},
     "derivative operators: second-order SPH(2), first-order corrected, or standard (docs/method.md 3)").def("SPH2");
 const IntParameter reorderInterval = schemes.integer("reorderInterval",
-    "steps between cell reorderings of the particles (0: never)").def(20).min(0);
+    "steps between cell reorderings of the particles, the first at a fresh start (0: never)").def(20).min(0);
 const OptionParameter positionUpdate = schemes.option("positionUpdate", {"euler", "midpoint"},
     "advection: r + dt u (eq. 7), or the implicit midpoint rule on the velocity linearised at each particle, "
     "which keeps the volume of a strained fluid (eq. 7b; docs/method.md 4.1)").def("euler");

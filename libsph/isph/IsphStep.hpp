@@ -97,6 +97,9 @@ class IsphStep {
     const int reorder = scheme_.reorderInterval;
     return reorder > 0 && s_.step > 0 && s_.step % reorder == 0;
   }
+  // A fresh start is reordered too: the generator's order (region by region) leaves the
+  // first interval's threads unequal shares of the fluid and of the pressure matrix.
+  bool reorders() const { return scheme_.reorderInterval > 0; }
   void startAfreshAtNextStep() { scheme_.ppe->startAfreshAtNextSolve(); }
   // The stages in execution order with their parameters and units, one per line.
   std::vector<std::string> describe() const;

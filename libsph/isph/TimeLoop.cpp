@@ -152,6 +152,8 @@ void TimeLoop<D>::start() {
   startInfo.startTimeName = startTimeName_;
   startInfo.timers = &timers_;
   if (const auto* open = outflow_.openBoundaries()) startInfo.crossings = &open->crossings();
+  // A restart keeps the order it was written in, so that it continues bit for bit.
+  if (freshStart && step_.reorders()) step_.reorderParticles();
   step_.analyse();
   // The initial write comes first: if it fails, no function-object file has been opened (truncated).
   if (freshStart) writeTime("initial particles");
