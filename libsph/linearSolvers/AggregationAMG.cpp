@@ -186,9 +186,9 @@ bool AggregationAMG::setup(const SparseMatrixR& A) {
   fine_ = &A;
   const int n = int(A.rows());
   if (stale_ || n != n_ || sinceSetup_ >= reuse_ || levels_.empty()) {
-    build(A);
+    const bool built = build(A);
     n_ = n;
-    stale_ = false;
+    stale_ = !built;  // a failed coarsest factorisation: rebuild at the next setup
     sinceSetup_ = 1;
     ++setups_;
   } else {
@@ -197,7 +197,7 @@ bool AggregationAMG::setup(const SparseMatrixR& A) {
   // The finest level smooths with this step's matrix; every level finds its split between
   // this solve's threads.
   Level& L0 = levels_[0];
-  const bool ok = invertDiagonal(A, L0.invDiag.data(), 0.0);
+  const bool ok = invertDiagonal(A, L0.invDiag.data(), 0.0) && !stale_;
   const int threads = omp_get_max_threads();
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
     const SparseMatrixR& M = l == 0 ? A : levels_[l].A;
@@ -209,7 +209,7 @@ bool AggregationAMG::setup(const SparseMatrixR& A) {
 // The levels are rebuilt in place: each keeps the storage of its matrices and vectors
 // from the last setup (reallocated only where a level grew), so a setup does not free
 // and reallocate the hierarchy and the heap does not fragment from one setup to the next.
-void AggregationAMG::build(const SparseMatrixR& A) {
+bool AggregationAMG::build(const SparseMatrixR& A) {
   levels_.reserve(kMaxLevels + 1);  // references to levels stay valid while they are added
   if (levels_.empty()) levels_.emplace_back();
   const SparseMatrixR* cur = &A;
@@ -225,21 +225,13 @@ void AggregationAMG::build(const SparseMatrixR& A) {
     const int nc = (n <= kCoarsest || l + 1 >= kMaxLevels) ? 0 : aggregate(*cur, diag_, agg_, threshold_, firstAgg_);
     if (nc == 0 || nc > 0.9 * n) {
       // Coarsest level, solved exactly (rows left out of aggregation are identity-like
-      // and solved here too): dense LU when small, sparse LU when aggregation stalled.
+      // and solved here too).
       L.P = SparseMatrixR();
       L.R = SparseMatrixR();
       levels_.resize(std::size_t(l) + 1);
       coarsestRows_ = n;
-      coarsestDense_ = n <= kCoarsest;
-      if (coarsestDense_) {
-        coarse_.compute(Eigen::MatrixXd(*cur));
-      } else {
-        const Eigen::SparseMatrix<double> Ac = *cur;  // column major for SparseLU
-        sparseCoarse_.compute(Ac);
-        if (sparseCoarse_.info() != Eigen::Success)
-          throw NumericalError("AMG: sparse LU of the coarsest level (" + std::to_string(n) + " rows) failed");
-      }
-      return;
+      coarsestStalled_ = n > kCoarsest;
+      return *coarse_.factor(*cur, false) == '\0';
     }
     smoothedProlongator(*cur, L.invDiag, agg_, nc, kOmega, L.P);
     truncate(L.P);
@@ -257,10 +249,8 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
   const Level& L = levels_[l];
   const int n = int(A.rows());
   if (l + 1 == int(levels_.size())) {
-    Eigen::Map<const Eigen::VectorXd> b(bp, n);
-    Eigen::Map<Eigen::VectorXd> x(xp, n);
-    if (coarsestDense_) x.noalias() = coarse_.solve(b);
-    else x = sparseCoarse_.solve(b);  // only a stalled (split-up) system gets here
+    std::copy(bp, bp + n, xp);
+    coarse_.solveInPlace(xp);
     return;
   }
   double* x = xp;

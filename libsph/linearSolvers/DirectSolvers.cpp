@@ -1,46 +1,23 @@
 // Direct sparse LU backends for the PPE (docs/method.md 4.2: "a direct SparseLU or
 // UMFPACK is also cheap and the most robust" at 2D test sizes).
-// KLU and UMFPACK are called through their C interfaces: the row-major (CSR)
-// matrix A is, read as compressed columns, the matrix A^T, which they factor;
+// KLU (KLUFactor.hpp) and UMFPACK are called through their C interfaces: the row-major
+// (CSR) matrix A is, read as compressed columns, the matrix A^T, which they factor;
 // the transposed solve (klu_tsolve, UMFPACK_At) then gives A x = b with no copy.
 // The symbolic analysis (fill-reducing ordering) is kept while the sparsity
 // pattern equals the last one (checked entry by entry; particles that gain or
 // lose a neighbour change it, so in a flowing case it is redone most steps).
 // SparseLU (Eigen, COLAMD ordering) works on a column-major copy.
 #include "core/Log.hpp"
+#include "linearSolvers/KLUFactor.hpp"
 #include "linearSolvers/Krylov.hpp"
 #include "linearSolvers/SolverBackends.hpp"
 #include <Eigen/SparseLU>
 #include <algorithm>
-#include <klu.h>
 #include <umfpack.h>
 
 namespace shizuku {
 
 namespace {
-
-// Remembers the pattern of the last matrix; same() compares without allocating
-// once the buffers have their capacity.
-class PatternMemo {
- public:
-  bool same(const SparseMatrixR& A) const {
-    const int n = int(A.rows());
-    if (n + 1 != int(outer_.size())) return false;
-    const int nnz = A.outerIndexPtr()[n];
-    if (nnz != int(inner_.size())) return false;
-    return std::equal(outer_.begin(), outer_.end(), A.outerIndexPtr()) &&
-           std::equal(inner_.begin(), inner_.end(), A.innerIndexPtr());
-  }
-  void remember(const SparseMatrixR& A) {
-    const int n = int(A.rows());
-    outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + n + 1);
-    inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.outerIndexPtr()[n]);
-  }
-  void forget() { outer_.clear(); inner_.clear(); }
-
- private:
-  std::vector<int> outer_, inner_;
-};
 
 LinearSolveResult finish(const std::string& name, const SparseMatrixR& A, const Eigen::VectorXd& b,
                          const Eigen::VectorXd& x, bool solved) {
@@ -54,44 +31,22 @@ LinearSolveResult finish(const std::string& name, const SparseMatrixR& A, const 
 
 class KLUSolver final : public LinearSolver {
  public:
-  explicit KLUSolver(bool reuse) : reuse_(reuse) { klu_defaults(&common_); }
-  ~KLUSolver() override { release(); }
+  explicit KLUSolver(bool reuse) : reuse_(reuse) {}
   std::string name() const override { return "KLU"; }
   std::string describe() const override {
     return cat("KLU (direct sparse LU", reuse_ ? ", symbolic analysis kept while the pattern is unchanged" : "", ")");
   }
   LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    const int n = int(A.rows());
-    int* Ap = const_cast<int*>(A.outerIndexPtr());
-    int* Ai = const_cast<int*>(A.innerIndexPtr());
-    double* Ax = const_cast<double*>(A.valuePtr());
-    if (numeric_) klu_free_numeric(&numeric_, &common_);
-    if (!(reuse_ && symbolic_ && memo_.same(A))) {
-      if (symbolic_) klu_free_symbolic(&symbolic_, &common_);
-      symbolic_ = klu_analyze(n, Ap, Ai, &common_);
-      if (reuse_) memo_.remember(A);
-      ++analyses_;
-    }
     LinearSolveResult r;
-    if (!symbolic_) { memo_.forget(); r.message = "KLU analysis failed"; return r; }
-    numeric_ = klu_factor(Ap, Ai, Ax, symbolic_, &common_);
-    if (!numeric_) { r.message = "KLU factorisation failed (singular matrix?)"; return r; }
+    r.message = lu_.factor(A, reuse_);
+    if (!r.message.empty()) return r;
     x = b;
-    const bool ok = klu_tsolve(symbolic_, numeric_, n, 1, x.data(), &common_) == 1;
-    return finish("KLU", A, b, x, ok);
+    return finish("KLU", A, b, x, lu_.solveInPlace(x.data()));
   }
 
  private:
-  void release() {
-    if (numeric_) klu_free_numeric(&numeric_, &common_);
-    if (symbolic_) klu_free_symbolic(&symbolic_, &common_);
-  }
   bool reuse_;
-  long analyses_ = 0;
-  klu_common common_;
-  klu_symbolic* symbolic_ = nullptr;
-  klu_numeric* numeric_ = nullptr;
-  PatternMemo memo_;
+  KLUFactor lu_;
 };
 
 class UMFPACKSolver final : public LinearSolver {
