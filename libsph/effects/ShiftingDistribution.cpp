@@ -126,7 +126,27 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     const G grad = (haveWeights && s.weights.order[i] != 255) ? this->par_.gradient : G::kernel;
     const double Ci = rho[i] * invRho0;
     Vec<D> sum = Vec<D>::Zero();
-    for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+    Index k = nl.begin(i);
+    const Index e = nl.end(i);
+    // OPS with the kernel gradient (the default) two pairs at a time: one packed square
+    // root, kernel evaluation, division and clumping power for both, then each pair's term
+    // added in order (the scalar loop's bits).
+    if (ops && grad == G::kernel && wholeNp == 4)
+      for (; k + 1 < e; k += 2) {
+        const Vec<D> rij[2] = {nl.rij(std::size_t(i), k), nl.rij(std::size_t(i), k + 1)};
+        const DoublePair r = shizuku::sqrt(DoublePair{rij[0].squaredNorm(), rij[1].squaredNorm()});
+        DoublePair wv, dw;
+        s.kernel.eval(r, wv, dw);
+        const DoublePair x = wv * invW0;
+        const DoublePair factor = 1.0 + this->par_.Rp * (x * x * x * x);
+        const DoublePair dwOverR = dw / r;
+        for (int lane = 0; lane < 2; ++lane) {
+          if (!(r[lane] > 0) || (dry && !s.isFluid(nl.j[k + lane]) && -rij[lane].dot(ni) > beyond)) continue;
+          const Vec<D> gradW = dwOverR[lane] * rij[lane];
+          sum += factor[lane] * gradW;
+        }
+      }
+    for (; k < e; ++k) {
       const Vec<D> rij = nl.rij(std::size_t(i), k);
       const double r = rij.norm();
       if (!(r > 0) || (dry && !s.isFluid(nl.j[k]) && -rij.dot(ni) > beyond)) continue;

@@ -67,6 +67,27 @@ class Kernel {
       }
     }
   }
+  // W and dW/dr at two distances at once: eval's arithmetic lane by lane (the same bits).
+  void eval(DoublePair r, DoublePair& wv, DoublePair& dw) const {
+    const DoublePair q = r * invH_;
+    const DoublePair zero = {0, 0};
+    if (type_ == KernelType::cubicSpline) {
+      const DoublePair t = 2.0 - q;
+      const auto inner = q < 1.0, inside = q < 2.0;
+      wv = inner ? sigma_ * (1.0 - q * q * (1.5 - 0.75 * q)) : inside ? sigma_ * 0.25 * t * t * t : zero;
+      dw = inner ? sigma_ * invH_ * q * (-3.0 + 2.25 * q) : inside ? -sigma_ * invH_ * 0.75 * t * t : zero;
+    } else {
+      const DoublePair t = 1.0 - 0.5 * q, t3 = t * t * t;
+      const auto inside = q < 2.0;
+      wv = inside ? sigma_ * t3 * t * (2.0 * q + 1.0) : zero;
+      dw = inside ? -5.0 * sigma_ * invH_ * q * t3 : zero;
+    }
+  }
+  DoublePair dwdr(DoublePair r) const {
+    DoublePair wv, dw;
+    eval(r, wv, dw);
+    return dw;
+  }
   // grad_i W_ij = dW/dr * r_ij / r with r_ij = r_i - r_j; since dW/dr <= 0 it
   // points from i toward j (docs/method.md 0).
   Vec<D> gradW(const Vec<D>& rij, double r) const {

@@ -39,6 +39,8 @@ template <int D> struct Limits {
         maxGradientAmplification(t.maxGradientAmplification) {}
 };
 
+using Pair = DoublePair;  // core/types.hpp
+
 enum Order : std::uint8_t { orderStandard = 0, orderFirst = 1, orderFI = 2, orderNone = 255 };
 
 // Quadratic Taylor basis layout: [0,D) first derivatives, [D,2D) diagonal
@@ -219,7 +221,26 @@ template <int D>
 inline double kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, std::size_t i, Index b, Index e, PairWeights<D>& out) {
   const double h2 = k.h() * k.h();
   double largest = 0;
-  for (Index p = b; p < e; ++p) {
+  // Two pairs at a time: their square roots, divisions and kernel derivatives share one
+  // packed instruction each (the same operations as the scalar loop below, lane by lane).
+  Index p = b;
+  Pair largest2 = {0, 0};
+  for (; p + 1 < e; p += 2) {
+    const Pair r = nl.r2(i, p);
+    const auto positive = r > 0.0;
+    const Pair invR = positive ? 1.0 / r : Pair{0, 0};
+    const Pair dw = k.dwdr(r);
+    const Pair kappa = -dw * invR * h2;
+    const Pair beta = kappa * h2 * invR * invR;
+    out.lapW[p] = kappa[0];
+    out.lapW[p + 1] = kappa[1];
+    out.gradW[p][0] = beta[0];
+    out.gradW[p + 1][0] = beta[1];
+    const Pair absDw = positive ? (dw < 0.0 ? -dw : dw) : Pair{0, 0};
+    largest2 = largest2 > absDw ? largest2 : absDw;
+  }
+  largest = std::max(largest2[0], largest2[1]);
+  for (; p < e; ++p) {
     const double r = nl.r(i, p), invR = r > 0 ? 1.0 / r : 0.0;  // coincident particles: no weight
     double w, dw;
     k.eval(r, w, dw);
@@ -231,35 +252,45 @@ inline double kernelRow(const Kernel<D>& k, const NeighbourList<D>& nl, std::siz
   return largest;
 }
 
-// FI row (after kernelRow). Returns false (kernelRow scratch untouched) if the
-// stencil fails the FI criteria.
+// The FI matrix S of row [b, e) (after kernelRow): its moments summed over the pairs, then
+// placed by the tables of Monomials. The moments are summed in pairs of doubles (one SSE2
+// register each), so that the 16 sums of 2D stay in registers instead of spilling to the
+// stack and waiting on their own stores: (kappa m3, beta m3) side by side, and kappa m2
+// followed by beta m4 two at a time. Each lane adds the same products in the same order as
+// a scalar sum would.
 template <int D>
-inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<D>& nl, std::size_t i, Index b, Index e,
-                  PairWeights<D>& out) {
+inline void fiMatrix(double invH, const NeighbourList<D>& nl, std::size_t i, Index b, Index e, const PairWeights<D>& out,
+                     double (&S)[Taylor<D>::NB][Taylor<D>::NB]) {
   using T = Taylor<D>;
-  constexpr int NB = T::NB;
-  if (e - b < lim.minNeighboursFI) return false;
-  const double invH = 1.0 / h;
   using Mo = Monomials<D>;
   static constexpr Mo mo{};
   constexpr int n2 = Mo::n2, n3 = Mo::n3, n4 = Mo::n4;
-  double K2[n2] = {}, K3[n3] = {}, B3[n3] = {}, B4[n4] = {};
+  constexpr int nKB = n2 + n4, nPairs = (nKB + 1) / 2;
+  Pair K3B3[n3] = {}, K2B4[nPairs] = {};
   for (Index p = b; p < e; ++p) {
     const Vec<D> s = -invH * nl.rij(i, p);
     const double kappa = out.lapW[p], beta = out.gradW[p][0];
-    double m2[n2], m3[n3], m4[n4];
+    double m2[n2], m3[n3], mono[2 * nPairs];  // mono: m2 then m4 (then a zero pad)
     for (int a = 0; a < D; ++a) m2[a] = s[a] * s[a];
     for (int k = 0; k < T::numOff; ++k) m2[D + k] = s[T::offA[k]] * s[T::offB[k]];
     for (int m = 0; m < n3; ++m) m3[m] = m2[mo.par3[m]] * s[mo.var3[m]];
-    for (int m = 0; m < n4; ++m) m4[m] = m3[mo.par4[m]] * s[mo.var4[m]];
-    for (int m = 0; m < n2; ++m) K2[m] += kappa * m2[m];
-    for (int m = 0; m < n3; ++m) {
-      K3[m] += kappa * m3[m];
-      B3[m] += beta * m3[m];
+    for (int m = 0; m < n2; ++m) mono[m] = m2[m];
+    for (int m = 0; m < n4; ++m) mono[n2 + m] = m3[mo.par4[m]] * s[mo.var4[m]];
+    if (nKB % 2) mono[nKB] = 0;
+    const Pair kb = {kappa, beta};
+    for (int m = 0; m < n3; ++m) K3B3[m] += kb * m3[m];
+    for (int k = 0; k < nPairs; ++k) {
+      const Pair c = {2 * k < n2 ? kappa : beta, 2 * k + 1 < n2 ? kappa : beta};
+      const Pair q = {mono[2 * k], mono[2 * k + 1]};
+      K2B4[k] += c * q;
     }
-    for (int m = 0; m < n4; ++m) B4[m] += beta * m4[m];
   }
-  double S[NB][NB];
+  double K2[n2], K3[n3], B3[n3], B4[n4];
+  for (int m = 0; m < n3; ++m) {
+    K3[m] = K3B3[m][0];
+    B3[m] = K3B3[m][1];
+  }
+  for (int m = 0; m < nKB; ++m) (m < n2 ? K2[m] : B4[m - n2]) = K2B4[m / 2][m % 2];
   for (int a = 0; a < D; ++a) {
     for (int b = 0; b < D; ++b) {
       S[a][b] = K2[mo.sq[a][b]];
@@ -272,6 +303,20 @@ inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<
   }
   for (int k = 0; k < n2; ++k)
     for (int m = 0; m < n2; ++m) S[D + k][D + m] = (m < D ? 0.5 : 1.0) * B4[mo.mul22[k][m]];
+}
+
+// FI row (after kernelRow). Returns false (kernelRow scratch untouched) if the
+// stencil fails the FI criteria.
+template <int D>
+inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<D>& nl, std::size_t i, Index b, Index e,
+                  PairWeights<D>& out) {
+  using T = Taylor<D>;
+  constexpr int NB = T::NB;
+  constexpr int n2 = Monomials<D>::n2;
+  if (e - b < lim.minNeighboursFI) return false;
+  const double invH = 1.0 / h;
+  double S[NB][NB];
+  fiMatrix<D>(invH, nl, i, b, e, out, S);
   double Sinv[NB][NB];
   if (!invertSmall<NB>(S, Sinv) || !(rcond1<NB>(S, Sinv) > lim.minRcondFI)) return false;
   // tilde gradW = G Phi, tilde lapW = ell . Phi with Phi = (kappa s ; beta q)
@@ -283,6 +328,11 @@ inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<
     for (int a = 0; a < D; ++a) sum += Sinv[D + a][l];
     ell[l] = lScale * sum;
   }
+  // The gradient's components two at a time (columns of G as pairs, a zero lane in 3D).
+  constexpr int nG = (D + 1) / 2;
+  Pair Gp[nG][NB];
+  for (int k = 0; k < nG; ++k)
+    for (int l = 0; l < NB; ++l) Gp[k][l] = Pair{G[2 * k][l], 2 * k + 1 < D ? G[2 * k + 1][l] : 0.0};
   for (Index p = b; p < e; ++p) {
     const Vec<D> s = -invH * nl.rij(i, p);
     const double kappa = out.lapW[p], beta = out.gradW[p][0];
@@ -292,14 +342,16 @@ inline bool fiRow(const Limits<D>& lim, double h, double V, const NeighbourList<
     // Written component by component: a Vec<D> assembled in scalars and stored whole made
     // the compiler spill it and reload it as a vector, a store-forwarding stall per pair.
     double* g = out.gradW[p].data();
-    double ls = 0, lq = 0;
-    for (int a = 0; a < D; ++a) {
-      double gs = 0, gq = 0;
-      for (int c = 0; c < D; ++c) gs += G[a][c] * s[c];
-      for (int m = 0; m < n2; ++m) gq += G[a][D + m] * q[m];
-      g[a] = kappa * gs + beta * gq;
-      ls += ell[a] * s[a];
+    for (int k = 0; k < nG; ++k) {
+      Pair gs = {0, 0}, gq = {0, 0};
+      for (int c = 0; c < D; ++c) gs += Gp[k][c] * s[c];
+      for (int m = 0; m < n2; ++m) gq += Gp[k][D + m] * q[m];
+      const Pair gk = kappa * gs + beta * gq;
+      g[2 * k] = gk[0];
+      if (2 * k + 1 < D) g[2 * k + 1] = gk[1];
     }
+    double ls = 0, lq = 0;
+    for (int a = 0; a < D; ++a) ls += ell[a] * s[a];
     for (int m = 0; m < n2; ++m) lq += ell[D + m] * q[m];
     out.lapW[p] = kappa * ls + beta * lq;
   }

@@ -56,6 +56,10 @@ struct NeighbourList {
     return periodic ? box.difference(xi, xj) : Vec<D>(xi - xj);
   }
   double r(std::size_t i, std::size_t p) const { return rij(i, p).norm(); }
+  // |r_ij| of pairs p and p + 1 of row i (the same bits as r(), two square roots in one).
+  DoublePair r2(std::size_t i, std::size_t p) const {
+    return shizuku::sqrt(DoublePair{rij(i, p).squaredNorm(), rij(i, p + 1).squaredNorm()});
+  }
   std::size_t numParticles() const { return offset.empty() ? 0 : offset.size() - 1; }
   std::size_t numPairs() const { return j.size(); }
   Index begin(std::size_t i) const { return offset[i]; }

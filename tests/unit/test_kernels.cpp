@@ -1,5 +1,6 @@
 // Kernel tests (docs/method.md section 2): normalisation, derivative, gradient
-// antisymmetry, compact support, lattice sums against the table of docs/method.md 2, kernel names, the declared kernel { } settings.
+// antisymmetry, compact support, lattice sums against the table of docs/method.md 2, kernel names, the declared kernel { } settings;
+// the two-lane evaluation (eval on a DoublePair) gives the scalar one's bits.
 #define BOOST_TEST_MODULE kernels
 #include <boost/test/unit_test.hpp>
 
@@ -7,6 +8,7 @@
 #include "../support/ErrorOf.hpp"
 #include "kernels/KernelParameters.hpp"
 #include <cmath>
+#include <vector>
 
 using namespace shizuku;
 
@@ -101,6 +103,35 @@ BOOST_AUTO_TEST_CASE(lattice_sums_converge_to_one) {
     BOOST_TEST(std::abs(k2.latticeSum(1.0) - 1.0) < 2e-3);
     BOOST_TEST(std::abs(k3.latticeSum(1.0) - 1.0) < 2e-3);
     BOOST_TEST(std::abs(Kernel<3>(t, 1.2).latticeSum(1.0) - 1.0) < 0.05);
+  }
+}
+
+// Every branch and boundary (q = 0, 1, 2, beyond 2) and 4000 distances between: the packed
+// evaluation the weights' kernel pass uses must be the scalar one bit for bit, so that
+// vectorising that pass changes no result.
+template <int D>
+void packedEqualsScalar(KernelType type) {
+  const Kernel<D> k(type, 0.012);
+  const double h = k.h();
+  std::vector<double> r = {0.0, h, 2 * h, 2.5 * h, std::nextafter(h, 0.0), std::nextafter(2 * h, 0.0)};
+  for (int m = 0; m < 4000; ++m) r.push_back(2.2 * h * m / 3999.0 + 1e-7 * h * (m % 7));
+  for (std::size_t m = 0; m + 1 < r.size(); ++m) {
+    DoublePair w2, dw2;
+    k.eval(DoublePair{r[m], r[m + 1]}, w2, dw2);
+    for (int lane = 0; lane < 2; ++lane) {
+      double w, dw;
+      k.eval(r[m + lane], w, dw);
+      BOOST_TEST(w2[lane] == w, "W at r = " << r[m + lane]);
+      BOOST_TEST(dw2[lane] == dw, "dW/dr at r = " << r[m + lane]);
+      BOOST_TEST(k.dwdr(DoublePair{r[m], r[m + 1]})[lane] == dw);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(packed_evaluation_gives_the_scalar_bits) {
+  for (KernelType t : {KernelType::cubicSpline, KernelType::WendlandC2}) {
+    packedEqualsScalar<2>(t);
+    packedEqualsScalar<3>(t);
   }
 }
 
