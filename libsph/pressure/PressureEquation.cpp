@@ -106,7 +106,9 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
   int* col = A_.innerIndexPtr();
   double* val = A_.valuePtr();
   long fallbacks = 0;
-#pragma omp parallel for schedule(static) reduction(+ : fallbacks)
+  // Dynamic: a wall row (its Adami weights and contacts) costs several fluid rows, and the
+  // walls are not spread evenly over a static split of the particles.
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : fallbacks)
   for (long i = 0; i < n; ++i) {
     Index pos = rowStart_[i];
     if (!unknown_[i]) {
