@@ -51,7 +51,7 @@ def prepare(src, dst, steps, adaptive):
     shutil.copytree(src, dst, ignore=shutil.ignore_patterns("[0-9]*", "postProcessing", "plots", "log.*", "*.pvd"))
     cd = os.path.join(dst, "system", "controlDict")
     text = open(cd).read()
-    dt = float(re.search(r"^\s*deltaT\s+([^;\s]+)", text, re.M).group(1))
+    dt = float(re.search(r"^\s*deltaT\s+([0-9.eE+-]+)\s*;", text, re.M).group(1))  # not a comment line that names it
     text = set_entry(text, "endTime", repr(steps * dt))
     text = set_entry(text, "writeControl", "timeStep")
     text = set_entry(text, "writeInterval", str(steps))
