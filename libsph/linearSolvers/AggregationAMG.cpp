@@ -255,21 +255,9 @@ void AggregationAMG::cycle(int l, const SparseMatrixR& A, const double* bp, doub
   }
   double* x = xp;
   L.split.sweepFromZero(A, L.invDiag.data(), bp, x);
-  for (int k = 1; k < kSweeps; ++k) L.split.sweep(A, L.invDiag.data(), bp, x, true);
-  // r = b - A x, restricted.
-  {
-    const int* outer = A.outerIndexPtr();
-    const int* col = A.innerIndexPtr();
-    const double* val = A.valuePtr();
-    const double* b = bp;
-    double* r = L.r.data();
-#pragma omp parallel for schedule(static) if (A.nonZeros() > kParallelEntries)
-    for (int i = 0; i < n; ++i) {
-      double s = b[i];
-      for (int p = outer[i]; p < outer[i + 1]; ++p) s -= val[p] * x[col[p]];
-      r[i] = s;
-    }
-  }
+  // r = b - A x (from the entries the sweep from zero did not use where that is exact), restricted.
+  static_assert(kSweeps == 1, "the residual is taken right after the one sweep from zero");
+  L.split.residualAfterSweepFromZero(A, bp, x, L.r.data(), A.nonZeros() > kParallelEntries);
   const Level& C = levels_[l + 1];
   spmv(L.R, L.r.data(), C.b.data());
   cycle(l + 1, C.A, C.b.data(), C.x.data());

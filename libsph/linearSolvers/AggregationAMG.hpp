@@ -17,7 +17,9 @@
 //     Rows with no off-diagonal entry (p = 0 rows) are left out of the coarse grids.
 //   cycle: one Gauss-Seidel sweep forward before and backward after the coarse
 //     correction, split between the threads by row blocks, the rows that couple blocks
-//     visited last where that pays (HybridGaussSeidel.hpp). The finest level always uses the current
+//     visited last where that pays (HybridGaussSeidel.hpp); the residual after the first
+//     sweep from the entries after each row's diagonal where the sweep makes that exact
+//     (about half the matrix: K&O 20k systems, two threads, 9 % less time a solve). The finest level always uses the current
 //     matrix; the coarse levels are kept from the last setup (the matrix changes
 //     little from one step to the next).
 // Levels below 2048 rows run on one thread. The setup's products (P, R = P^T and

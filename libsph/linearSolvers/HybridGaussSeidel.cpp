@@ -159,6 +159,42 @@ void ThreadSplit::prepare(const SparseMatrixR& A, int threads) {
   interfaceRows(A, threads_, interface_);
   acrossBlocks_ = !interfaceOrderPays(interface_.size(), int(A.rows()), threads_);
   if (acrossBlocks_) old_.resize(std::size_t(A.rows()));
+  // Where each row's entries after the diagonal start, and the rows that need the whole row.
+  const int n = int(A.rows());
+  const Rows R(A);
+  upper_.resize(std::size_t(n));
+  std::vector<char>& isInterface = interfaceMask_;
+  isInterface.assign(std::size_t(n), 0);
+  for (const int i : interface_) isInterface[std::size_t(i)] = 1;
+#pragma omp parallel for schedule(static) if (n > 2048)
+  for (int i = 0; i < n; ++i) {
+    int p = R.outer[i];
+    const int e = R.outer[i + 1];
+    bool whole = acrossBlocks_ || isInterface[std::size_t(i)];
+    for (; p < e && R.col[p] < i; ++p) whole = whole || isInterface[std::size_t(R.col[p])];
+    // A zero or missing diagonal: the sweep set x_i = 0 without solving the row.
+    whole = whole || !(p < e && R.col[p] == i && R.val[p] != 0);
+    upper_[std::size_t(i)] = whole ? -1 : p + 1;
+  }
+}
+
+void ThreadSplit::residualAfterSweepFromZero(const SparseMatrixR& A, const double* b, const double* x, double* r,
+                                             bool parallel) const {
+  const Rows R(A);
+  const int n = int(A.rows());
+#pragma omp parallel for schedule(static) if (parallel)
+  for (int i = 0; i < n; ++i) {
+    const int u = upper_[std::size_t(i)];
+    double s;
+    if (u < 0) {
+      s = b[i];
+      for (int p = R.outer[i]; p < R.outer[i + 1]; ++p) s -= R.val[p] * x[R.col[p]];
+    } else {
+      s = 0;
+      for (int p = u; p < R.outer[i + 1]; ++p) s -= R.val[p] * x[R.col[p]];
+    }
+    r[i] = s;
+  }
 }
 
 void ThreadSplit::sweep(const SparseMatrixR& A, const double* inv, const double* b, double* x, bool forward) const {

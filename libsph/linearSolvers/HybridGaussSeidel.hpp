@@ -64,12 +64,23 @@ class ThreadSplit {
   void prepare(const SparseMatrixR& A, int threads);
   void sweep(const SparseMatrixR& A, const double* inv, const double* b, double* x, bool forward) const;
   void sweepFromZero(const SparseMatrixR& A, const double* inv, const double* b, double* x) const;
+  // r = b - A x right after sweepFromZero wrote x. A row the sweep solved from its final
+  // neighbours' values (every row on one thread; an interior row with no interface row
+  // before its diagonal on several) has sum_{j<=i} a_ij x_j = b_i up to the rounding of
+  // x_i = s / a_ii, so its residual is -sum_{j>i} a_ij x_j: the entries after the diagonal
+  // alone, about half the row. The other rows (interface rows, interior rows that read an
+  // interface row's value while it was still zero, rows with a zero diagonal, and the
+  // block-Jacobi split's rows) take the whole row.
+  void residualAfterSweepFromZero(const SparseMatrixR& A, const double* b, const double* x, double* r,
+                                  bool parallel) const;
   bool acrossBlocks() const { return acrossBlocks_; }
 
  private:
   int threads_ = 1;
   bool acrossBlocks_ = false;
   std::vector<int> interface_;
+  std::vector<int> upper_;            // per row: its first entry after the diagonal, or -1: the whole row
+  std::vector<char> interfaceMask_;   // prepare's scratch: which rows are interface rows
   mutable std::vector<double> old_;  // the block-Jacobi split's values from before a sweep
 };
 

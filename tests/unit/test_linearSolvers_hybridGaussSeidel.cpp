@@ -5,7 +5,8 @@
 // a backward sweep in the reverse order, bit for bit; the sweep from zero (interior rows
 // stopping at their diagonal) equals a forward sweep on x = 0 bit for bit; a team smaller than
 // the blocks (a parallel region inside another) still sweeps every block; interfaceOrderPays
-// and the block-Jacobi split it falls back to; ThreadSplit choosing between them.
+// and the block-Jacobi split it falls back to; ThreadSplit choosing between them; the
+// residual after the sweep from zero from the entries after the diagonal equals b - A x.
 #define BOOST_TEST_MODULE linearSolvers_hybridGaussSeidel
 #include "linearSolvers/HybridGaussSeidel.hpp"
 #include <boost/test/unit_test.hpp>
@@ -229,5 +230,48 @@ BOOST_AUTO_TEST_CASE(the_thread_split_chooses_and_sweeps) {
     }
     BOOST_TEST(x == ref);
     BOOST_TEST(split.acrossBlocks() == (A == &dense));
+  }
+}
+
+// The residual right after the sweep from zero, taken from the entries after the diagonal
+// where that is exact: equal to b - A x (to the rounding of each solved x_i) on one, two
+// and three threads, with interface rows, an interior row reading an interface row before
+// its diagonal, the zero-diagonal row 17 (without and with a stored zero), and the
+// block-Jacobi split.
+BOOST_AUTO_TEST_CASE(the_residual_after_the_sweep_from_zero_is_b_minus_ax) {
+  const int n = 3001;
+  const Problem p = randomProblem(n);
+  SparseMatrixR dense(n, n);  // every row reaches every block: the block-Jacobi split
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, i, 4.0);
+    t.emplace_back(i, (i + n / 2) % n, -1.0);
+  }
+  dense.setFromTriplets(t.begin(), t.end());
+  std::vector<double> denseInv(n, 0.25);
+  // Row 17 again, with its zero diagonal stored as an entry.
+  std::vector<Eigen::Triplet<double>> withZero;
+  for (int i = 0; i < n; ++i)
+    for (SparseMatrixR::InnerIterator it(p.A, i); it; ++it) withZero.emplace_back(i, int(it.col()), it.value());
+  withZero.emplace_back(17, 17, 0.0);
+  SparseMatrixR zeroDiagonal(n, n);
+  zeroDiagonal.setFromTriplets(withZero.begin(), withZero.end());
+  for (const SparseMatrixR* A : std::vector<const SparseMatrixR*>{&p.A, &zeroDiagonal, &dense}) {
+    const double* inv = A == &dense ? denseInv.data() : p.inv.data();
+    for (int threads : {1, 2, 3}) {
+      hybridGaussSeidel::ThreadSplit split;
+      split.prepare(*A, threads);
+      std::vector<double> x(n, 7.0), r(n), exact(n);
+      split.sweepFromZero(*A, inv, p.b.data(), x.data());
+      split.residualAfterSweepFromZero(*A, p.b.data(), x.data(), r.data(), true);
+      double worst = 0, scale = 0;
+      for (int i = 0; i < n; ++i) {
+        double s = p.b[i];
+        for (SparseMatrixR::InnerIterator it(*A, i); it; ++it) s -= it.value() * x[it.col()];
+        worst = std::max(worst, std::abs(r[i] - s));
+        scale = std::max(scale, std::abs(p.b[i]));
+      }
+      BOOST_TEST(worst < 1e-13 * scale, "threads " << threads << ": |r - (b - A x)| = " << worst);
+    }
   }
 }
