@@ -71,13 +71,18 @@ bool besideDryWall(const FlowState<D>& s, std::size_t i, Vec<D>& n, double& beyo
   return false;
 }
 
-// x^p, by repeated multiplication when p is a small whole number (np = 4 by default).
+// x^whole for a whole exponent of at least 1, by repeated multiplication (((x x) x) x for the
+// default np = 4), for one value or two (DoublePair) alike.
+template <class T>
+inline T wholePower(T x, int whole) {
+  T r = x;
+  for (int k = 1; k < whole; ++k) r *= x;
+  return r;
+}
+// x^p: wholePower when p is a small whole number, else std::pow.
 inline double power(double x, double p, int whole) {
   if (whole < 0) return std::pow(x, p);
-  if (whole == 4) return x * x * x * x;  // the default, unrolled (the same product order)
-  double r = 1;
-  for (int k = 0; k < whole; ++k) r *= x;
-  return r;
+  return whole == 0 ? 1.0 : wholePower(x, whole);
 }
 }  // namespace
 
@@ -131,14 +136,13 @@ void ShiftingDistribution<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>
     // OPS with the kernel gradient (the default) two pairs at a time: one packed square
     // root, kernel evaluation, division and clumping power for both, then each pair's term
     // added in order (the scalar loop's bits).
-    if (ops && grad == G::kernel && wholeNp == 4)
+    if (ops && grad == G::kernel && wholeNp >= 1)
       for (; k + 1 < e; k += 2) {
-        const Vec<D> rij[2] = {nl.rij(std::size_t(i), k), nl.rij(std::size_t(i), k + 1)};
-        const DoublePair r = shizuku::sqrt(DoublePair{rij[0].squaredNorm(), rij[1].squaredNorm()});
+        Vec<D> rij[2];
+        const DoublePair r = nl.r2(std::size_t(i), std::size_t(k), rij);
         DoublePair wv, dw;
         s.kernel.eval(r, wv, dw);
-        const DoublePair x = wv * invW0;
-        const DoublePair factor = 1.0 + this->par_.Rp * (x * x * x * x);
+        const DoublePair factor = 1.0 + this->par_.Rp * wholePower(wv * invW0, wholeNp);
         const DoublePair dwOverR = dw / r;
         for (int lane = 0; lane < 2; ++lane) {
           if (!(r[lane] > 0) || (dry && !s.isFluid(nl.j[k + lane]) && -rij[lane].dot(ni) > beyond)) continue;

@@ -47,8 +47,8 @@ void VolumeCorrection<D>::addShift(const FlowState<D>& s, std::vector<Vec<D>>& d
     Index k = nl.begin(i);
     const Index e = nl.end(i);
     for (; k + 1 < e; k += 2) {  // two pairs' square roots and divisions in one instruction each
-      const Vec<D> rij[2] = {nl.rij(std::size_t(i), k), nl.rij(std::size_t(i), k + 1)};
-      const DoublePair r = shizuku::sqrt(DoublePair{rij[0].squaredNorm(), rij[1].squaredNorm()});
+      Vec<D> rij[2];
+      const DoublePair r = nl.r2(std::size_t(i), std::size_t(k), rij);
       const DoublePair q = DoublePair{errorSum(k), errorSum(k + 1)} / r;
       for (int lane = 0; lane < 2; ++lane)
         if (r[lane] < rStar && r[lane] > 0) sum += q[lane] * rij[lane];

@@ -74,8 +74,8 @@ class WallFriction final : public ForceEffect<D> {
       for (Index k = nl.begin(f); k < nl.end(f); ++k) {
         if (!P.isWall(std::size_t(nl.j[k]))) continue;
         const Vec<D> r = nl.rij(std::size_t(f), k);
-        sum += s.w(std::size_t(f), k) * r;
         const double dist = r.norm();
+        sum += s.kernel.w(dist) * r;
         if (dist < nearest) {
           nearest = dist;
           nearestPair = k;

@@ -12,8 +12,8 @@
 //     A_c = R A P; recursively until <= 400 unknowns, or until the aggregation
 //     stalls on a larger level (a flow broken into many small clusters: a dispersed
 //     splash); the coarsest level is solved by a sparse LU (KLU, KLUFactor.hpp: on the
-//     K&O 20k systems' 310-row coarsest level a tenth of a dense LU's factorisation
-//     and a third of its solve).
+//     K&O 20k systems' coarsest level, about 300 rows of 17 entries, 0.40-0.60 ms a
+//     factorisation against 1.09-1.60 for a dense LU, 8-11 us a solve against 14-22).
 //     Rows with no off-diagonal entry (p = 0 rows) are left out of the coarse grids.
 //   cycle: one Gauss-Seidel sweep forward before and backward after the coarse
 //     correction, split between the threads by row blocks, the rows that couple blocks

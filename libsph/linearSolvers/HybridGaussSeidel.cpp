@@ -163,6 +163,10 @@ void ThreadSplit::prepare(const SparseMatrixR& A, int threads) {
   const int n = int(A.rows());
   const Rows R(A);
   upper_.resize(std::size_t(n));
+  if (acrossBlocks_) {  // every row reads values from before the sweep: the whole row
+    std::fill(upper_.begin(), upper_.end(), -1);
+    return;
+  }
   std::vector<char>& isInterface = interfaceMask_;
   isInterface.assign(std::size_t(n), 0);
   for (const int i : interface_) isInterface[std::size_t(i)] = 1;
@@ -170,7 +174,7 @@ void ThreadSplit::prepare(const SparseMatrixR& A, int threads) {
   for (int i = 0; i < n; ++i) {
     int p = R.outer[i];
     const int e = R.outer[i + 1];
-    bool whole = acrossBlocks_ || isInterface[std::size_t(i)];
+    bool whole = isInterface[std::size_t(i)];
     for (; p < e && R.col[p] < i; ++p) whole = whole || isInterface[std::size_t(R.col[p])];
     // A zero or missing diagonal: the sweep set x_i = 0 without solving the row.
     whole = whole || !(p < e && R.col[p] == i && R.val[p] != 0);

@@ -34,7 +34,6 @@ const char* KLUFactor::factor(const SparseMatrixR& A, bool keepAnalysis) {
     if (symbolic_) klu_free_symbolic(&symbolic_, &common_);
     symbolic_ = klu_analyze(n_, Ap, Ai, &common_);
     if (keepAnalysis) memo_.remember(A);
-    ++analyses_;
   }
   if (!symbolic_) {
     memo_.forget();

@@ -39,12 +39,10 @@ class KLUFactor {
   const char* factor(const SparseMatrixR& A, bool keepAnalysis);
   // x <- A^-1 x (after a successful factor). Returns false if KLU reports a failure.
   bool solveInPlace(double* x) const;
-  long analyses() const { return analyses_; }
 
  private:
   void release();
   int n_ = 0;
-  long analyses_ = 0;
   mutable klu_common common_;  // KLU records each call's status in it
   klu_symbolic* symbolic_ = nullptr;
   klu_numeric* numeric_ = nullptr;

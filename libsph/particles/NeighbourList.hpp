@@ -56,9 +56,16 @@ struct NeighbourList {
     return periodic ? box.difference(xi, xj) : Vec<D>(xi - xj);
   }
   double r(std::size_t i, std::size_t p) const { return rij(i, p).norm(); }
-  // |r_ij| of pairs p and p + 1 of row i (the same bits as r(), two square roots in one).
+  // r_ij of pairs p and p + 1 of row i into rij, and their lengths (the same bits as r(), two
+  // square roots in one).
+  DoublePair r2(std::size_t i, std::size_t p, Vec<D> (&rij2)[2]) const {
+    rij2[0] = rij(i, p);
+    rij2[1] = rij(i, p + 1);
+    return shizuku::sqrt(DoublePair{rij2[0].squaredNorm(), rij2[1].squaredNorm()});
+  }
   DoublePair r2(std::size_t i, std::size_t p) const {
-    return shizuku::sqrt(DoublePair{rij(i, p).squaredNorm(), rij(i, p + 1).squaredNorm()});
+    Vec<D> rij2[2];
+    return r2(i, p, rij2);
   }
   std::size_t numParticles() const { return offset.empty() ? 0 : offset.size() - 1; }
   std::size_t numPairs() const { return j.size(); }
