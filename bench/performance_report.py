@@ -163,8 +163,10 @@ def write(csvPath, mdPath, quick):
         tot = sum(st.values()) or 1
         top = sorted(st.items(), key=lambda kv: -kv[1])[:3]
         why = ", ".join(f"{k} {100 * v / tot:.0f} %" for k, v in top)
+        runs = extra(r20).get("runs")
+        runs = f"; median of {runs.count('/') + 1} runs: {runs.replace('/', ', ')}" if runs else ""
         add(f"| full step <= 1.0 us/particle-step at 20k particles, 2 threads (issue 23) | {f(us)} us (CPU {f(r20['cpuUsPerParticleStep'])} us, "
-            f"load {f(r20['load'], 2)}) | {'yes' if us <= 1.0 else 'no'} | largest stages: {why}. "
+            f"load {f(r20['load'], 2)}{runs}) | {'yes' if us <= 1.0 else 'no'} | largest stages: {why}. "
             "See 'What remains' |")
     ps = find(rows, "pysph", "KO-dx0.03-pysph-sisph")
     sh = find(rows, "pysph", "KO-dx0.03-shizuku")
@@ -344,7 +346,7 @@ def write(csvPath, mdPath, quick):
     # ---------------------------------------------------------- throughput
     add("## Throughput and stage split (fixed dt = 1e-4 s)")
     add("")
-    table_header(add, ["case", "fluid", "threads", "steps", "us/particle-step", "CPU us", "speed-up 1->2"] +
+    table_header(add, ["case", "fluid", "threads", "steps", "us/particle-step", "runs", "CPU us", "speed-up 1->2"] +
                  [g for g, _ in GROUPS])
     for r in rows:
         if r["part"] != "throughput":
@@ -355,10 +357,12 @@ def write(csvPath, mdPath, quick):
             r1 = find(rows, "throughput", r["case"], 1)
             if r1:
                 sp = f(float(r1["usPerParticleStep"]) / float(r["usPerParticleStep"]))
+        runs = extra(r).get("runs", "").replace("/", ", ")
         add(f"| {r['case']} | {r['fluid']} | {r['threads']} | {r['steps']} | {f(r['usPerParticleStep'])} | "
-            f"{f(r['cpuUsPerParticleStep'])} | {sp} | " + " | ".join(cols) + " |")
+            f"{runs} | {f(r['cpuUsPerParticleStep'])} | {sp} | " + " | ".join(cols) + " |")
     add("")
-    add("The stage columns are shares of the summed stage times. The rotating patch and the paper's dam break use")
+    add("Each row is the median of the runs listed beside it (run order; each run a fresh copy of the case),")
+    add("its CPU time and stage split that run's. The stage columns are shares of the summed stage times. The rotating patch and the paper's dam break use")
     add("the tutorials (cm units, d0 = 1 cm); KO-dx* is the Koshizuka & Oka geometry in m.")
     add("")
 
