@@ -120,7 +120,7 @@ def write(csvPath, mdPath, quick):
     add("median of three runs), started when two probe runs of KO-dx0.01 in a row showed a fast spell of the")
     add("host (load 0.04 before the first run; the loads the rows show after it are the benchmark's own")
     add("preceding runs, two threads each, 3 min 1 s in all), so these three parts are one run on one machine")
-    add("as issue 23 asks; threeD on the evening before at 8fe8d62, whose solver is df2f45d's up to the")
+    add("as issue 23 asks; threeD earlier that evening at 8fe8d62, whose solver is df2f45d's up to the")
     add("last bit of every tutorial's fields (load 0.9; the 3D-100k case on")
     add("two threads 3.21 us per particle-step of all, 3.8 at commit cdc98cd earlier that day on a busier")
     add("host; 100k to 800k grows 1.95x, 2.26x before); solvers earlier that day, after the AMG's 2D")
