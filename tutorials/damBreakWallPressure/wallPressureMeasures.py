@@ -15,6 +15,13 @@ one) it reads postProcessing/P1/0/wallPressure.dat (raw column `p`, filtered col
              over the plateau 3.5 <= t* <= 5.5 (unfiltered)
   interiorNoise  the same noise of the `interior` probe, inside the water 0.12 m from the
              wall and 8 cm up (nan without it)
+  balance    the horizontal impulse balance over the plateau (nan without the `farWall`
+             and `leftWall` sensors and `conservation`): the change of the water's x
+             momentum against the walls' impulse on it, I_left - I_far, as a share of I_far,
+             |dM_x - (I_left - I_far)| / I_far. The walls are the only horizontal force on
+             the water, so the share is zero when the pressure the sensors read is the
+             force the water feels (Newton's third law at the wall); the floor's viscous
+             stress and the rest of the discretisation's imbalance are in the share.
 The same measures on an experiment's digitised points (a few points per unit t*: the noise
 cannot be measured there and is printed as nan; peaks from the points themselves).
 --plot draws each case's raw and filtered P1 over the two digitised experiments in data/
@@ -93,6 +100,32 @@ def interior_noise(case, H, rho, g):
     return float(np.sqrt(np.mean((p[m] - moving_average(t, p, WINDOW)[m]) ** 2)))
 
 
+def _columns(path, *names):
+    header, _, tokens = shizukuPost.read_tokens(path)
+    cols = [header.index(n) for n in names]
+    return [np.array([float(r[c].strip("()").split()[0]) for r in tokens]) for c in cols]
+
+
+def impulse_balance(case, H=0.6, g=9.81, window=PLATEAU):
+    """|dM_x - (I_left - I_far)| / I_far over `window` in t* (nan without the files)."""
+    pp = os.path.join(case, "postProcessing")
+    paths = [os.path.join(pp, n, "0", f) for n, f in (("conservation", "conservation.dat"),
+                                                       ("leftWall", "wallPressure.dat"),
+                                                       ("farWall", "wallPressure.dat"))]
+    if not all(os.path.exists(p) for p in paths):
+        return float("nan")
+    lo, hi = (w / np.sqrt(g / H) for w in window)
+    t, mx = _columns(paths[0], "time", "momentum")
+    if t[-1] < hi:
+        return float("nan")
+    change = [np.interp(hi, t, mx) - np.interp(lo, t, mx)]
+    for path in paths[1:]:
+        tw, imp = _columns(path, "time", "impulse")
+        change.append(np.interp(hi, tw, imp) - np.interp(lo, tw, imp))
+    dm, left, far = change
+    return float(abs(dm - (left - far)) / far)
+
+
 def plot(cases, labels, out, H, rho, g):
     import matplotlib
     matplotlib.use("Agg")
@@ -132,7 +165,8 @@ def main():
     else:
         rows = [(c, dict(measures(*read_run(os.path.join(c, "postProcessing", "P1", "0", "wallPressure.dat"),
                                             a.H, a.rho, a.g)),
-                         interiorNoise=interior_noise(c, a.H, a.rho, a.g))) for c in a.cases]
+                         interiorNoise=interior_noise(c, a.H, a.rho, a.g),
+                         balance=impulse_balance(c, a.H, a.g))) for c in a.cases]
     for name, res in rows:
         print(name + ": " + " ".join("%s %.4g" % kv for kv in res.items()))
     if a.plot:
