@@ -60,6 +60,12 @@ MUTATIONS = [
              "    if (false) velocitySum += ",
              [r"^unit\.test_isph_wallSlide$"],
              "the wall row keeps only the forces' acceleration (Adami's form): fluid moving into a wall goes through it"),
+    Mutation("wallRowVelocityOnSurfaceOnly", "libsph/boundaries/WallParticles.cpp",
+             "    if (!inlet) velocitySum += ",
+             "    if (!inlet && (s.particles.surfaceClass(f) == SurfaceClass::free || "
+             "s.particles.surfaceClass(f) == SurfaceClass::splash)) velocitySum += ",
+             [r"^unit\.test_isph_wallSlide$"],
+             "the wall row's velocity term acts on free and splash particles only: water under the surface moving into a wall is not stopped"),
     Mutation("wallRowCarriesLoneParticle", "libsph/boundaries/WallParticles.cpp",
              ": Vec<D>(contacts.lone[f] ? Vec<D>(n * n.dot(forces)) : forces);",
              ": Vec<D>(forces);",
