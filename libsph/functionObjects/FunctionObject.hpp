@@ -45,9 +45,11 @@ class FunctionObject {
 };
 
 // Build the function objects of a `functions` dictionary (nullptr or empty: none);
-// `walls`: the case's wall regions (wallPressure sensors sit on their faces).
+// `walls`: the case's wall regions (wallPressure sensors sit on their faces); `gravity`: the
+// case's g (zero without constant/g), which a wallPressure reading the fluid side needs.
 template <int D>
 std::vector<std::unique_ptr<FunctionObject<D>>> createFunctionObjects(const Dictionary* functions,
-                                                                      const std::vector<WallBox<D>>& walls = {});
+                                                                      const std::vector<WallBox<D>>& walls = {},
+                                                                      const Vec<D>& gravity = Vec<D>::Zero());
 
 }  // namespace shizuku

@@ -11,9 +11,10 @@ namespace shizuku {
 std::vector<std::string> functionObjectTypes();
 
 // Build the object `name` from its dictionary (which holds `type`); `walls`: the case's
-// wall regions (a wallPressure needs its wall's). Throws InputError.
+// wall regions (a wallPressure needs its wall's), `gravity` the case's g. Throws InputError.
 template <int D>
 std::unique_ptr<FunctionObject<D>> createFunctionObject(const std::string& name, const Dictionary& dict,
-                                                        const std::vector<WallBox<D>>& walls = {});
+                                                        const std::vector<WallBox<D>>& walls = {},
+                                                        const Vec<D>& gravity = Vec<D>::Zero());
 
 }  // namespace shizuku

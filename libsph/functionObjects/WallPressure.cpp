@@ -22,6 +22,11 @@ const ScalarParameter size =
         .required().above(0);
 const OptionParameter shape = sensor.option("shape", {"square", "disc"}, "the sensor's shape in 3D (2D: a segment)")
                                   .def("square");
+const OptionParameter faceValue =
+    sensor.option("faceValue", {"wallLayers", "fluid"},
+                  "the face pressure: from the first two wall layers (3/2 p_1 - 1/2 p_2) or from the fluid next to "
+                  "the face (its pressure carried hydrostatically to the face; fixed walls)")
+        .def("wallLayers");
 const ParameterGroup filter("system/controlDict: functions/<name>/filter (type wallPressure)",
                             "Optional low-pass filter of the sensor's pressure, written as an extra column.");
 const OptionParameter filterType =
@@ -38,8 +43,9 @@ constexpr int kDiscRings = 32, kDiscRays = 64;  // polar quadrature of the disc
 }  // namespace
 
 template <int D>
-WallPressure<D>::WallPressure(const std::string& name, const Dictionary& dict, const std::vector<WallBox<D>>& walls)
-    : SampledFunctionObject<D>(name, "wallPressure", dict) {
+WallPressure<D>::WallPressure(const std::string& name, const Dictionary& dict, const std::vector<WallBox<D>>& walls,
+                              const Vec<D>& gravity)
+    : SampledFunctionObject<D>(name, "wallPressure", dict), gravity_(gravity) {
   const std::string wallName = dict.getWord(key::wall.keyword());
   recordParameter(key::wall.info(), &dict, wallName, false);
   std::vector<std::string> names;
@@ -62,6 +68,10 @@ WallPressure<D>::WallPressure(const std::string& name, const Dictionary& dict, c
   if (wall_.layers < 2)
     dict.error("wall", cat("wall '", wallName, "' has ", wall_.layers, " layer(s); the sensor extrapolates from the "
                            "first two layers to the face: give it layers 2 or more"));
+  fromFluid_ = key::faceValue.read(dict) == "fluid";
+  if (fromFluid_ && wall_.motion >= 0)
+    dict.error("faceValue", cat("fluid: wall '", wallName, "' moves; the fluid-side face value is for fixed walls "
+                                "(use wallLayers)"));
   size_ = key::size.read(dict);
   if (D == 3) disc_ = key::shape.read(dict) == "disc";
   else if (dict.found("shape")) dict.error("shape", "in 2D the sensor is a segment of length `size`; shape is for 3D");
@@ -222,6 +232,9 @@ void WallPressure<D>::buildTerms(const Dictionary& dict) {
       Term term;
       for (int k = 0; k < D; ++k) term.position[k] = axisNodes_[k][std::size_t(idx[k])];
       term.weight = layer == 0 ? 1.5 * w : -0.5 * w;
+      term.share = layer == 0 ? w : 0.0;
+      term.face = term.position;
+      term.face[axis_] = side_ ? wall_.max[axis_] : wall_.min[axis_];
       termOf_[idx] = terms_.size();
       terms_.push_back(term);
     }
@@ -274,9 +287,29 @@ double WallPressure<D>::pressure(const FlowState<D>& s) {
   if (world.any(!current)) locate(s);
   located_ = true;
   double p = 0;
-  for (const auto& t : terms_)
-    if (t.id >= 0) p += t.weight * P.pressure[t.index];
+  for (const auto& t : terms_) {
+    if (t.id < 0) continue;
+    if (fromFluid_) p += t.share > 0 ? t.share * fluidFaceValue(s, t) : 0.0;
+    else p += t.weight * P.pressure[t.index];
+  }
   return world.sum(p);
+}
+
+// sum_f W_wf (p_f + rho0 g . (x_c - r_f)) / sum_f W_wf over the fluid neighbours of the
+// column's first-layer particle w (0 without any: the wall row's p_w = 0).
+template <int D>
+double WallPressure<D>::fluidFaceValue(const FlowState<D>& s, const Term& t) const {
+  const auto& nl = s.neighbours;
+  const auto& P = s.particles;
+  double sum = 0, weights = 0;
+  for (Index k = nl.begin(t.index); k < nl.end(t.index); ++k) {
+    const Index f = nl.j[k];
+    if (!s.isFluid(std::size_t(f))) continue;
+    const double wk = s.w(t.index, k);
+    sum += wk * (P.pressure[f] + s.rho0 * gravity_.dot(t.face - P.position[f]));
+    weights += wk;
+  }
+  return weights > 0 ? sum / weights : 0.0;
 }
 
 template <int D>
@@ -305,6 +338,7 @@ std::string WallPressure<D>::details() const {
   const std::string shape = D == 2 ? "segment" : (disc_ ? "disc" : "square");
   return cat(", wall '", wall_.name, "' face ", faceName(), ", ", shape, " ", formatNumber(size_), " m at ",
              formatNumber<D>(centre_), ", ", terms_.size(), " wall particles",
+             fromFluid_ ? std::string(", face value from the fluid") : std::string(),
              filter_ ? cat(", low-pass ", formatNumber(cutoff_), " Hz") : std::string());
 }
 
@@ -315,8 +349,11 @@ void WallPressure<D>::open(const FlowState<D>& s, const RunInfo& info) {
   const std::string shape = D == 2 ? "segment" : (disc_ ? "disc" : "square");
   this->file_->comment(cat("mean pressure on a ", shape, " of size ", formatNumber(size_), " m at ",
                            formatNumber<D>(centre_), " on face ", faceName(), " of wall '", wall_.name,
-                           "' (face value 3/2 p_1 - 1/2 p_2 of the first two wall layers, interpolated along the "
-                           "face); force = p x area ", formatNumber(area_), D == 2 ? " m (per unit depth)" : " m^2",
+                           fromFluid_ ? "' (face value from the fluid: sum W (p_f + rho0 g . (x_face - r_f)) / sum W "
+                                        "over the first wall layer's fluid neighbours"
+                                      : "' (face value 3/2 p_1 - 1/2 p_2 of the first two wall layers",
+                           ", interpolated along the face); force = p x area ", formatNumber(area_),
+                           D == 2 ? " m (per unit depth)" : " m^2",
                            "; impulse since the start time",
                            filter_ ? cat("; p_lowPass: first-order low-pass, cut-off ", formatNumber(cutoff_), " Hz")
                                    : std::string()));

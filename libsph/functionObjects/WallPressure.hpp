@@ -3,13 +3,22 @@
 //   The sensor lies on the face of wall `wall` on which `centre` lies (within d0/2 of a
 //   closed face of its surface): in 2D a segment of length `size` along the face, in 3D
 //   a square of side `size` (or `shape disc;`, a disc of diameter `size`).
-//   The face pressure at each wall column is extrapolated from the PPE's pressure of the
-//   first two wall layers (docs/method.md 11: the Adami rows carry the fluid pressure
-//   into the wall), which sit d0/2 and 3d0/2 behind the surface (s/2 and 3s/2 inside a solid box, s <= d0
-//   its lattice spacing normal to the face):
-//     p_face = p_1 + (p_1 - p_2)/2 = 3/2 p_1 - 1/2 p_2,
-//   exact for a pressure linear across the wall (hydrostatic, or any uniform
-//   acceleration). Along the face the column values are interpolated linearly (2D) or
+//   The face pressure at each wall column (`faceValue`):
+//   - wallLayers (default): extrapolated from the PPE's pressure of the first two wall
+//     layers (docs/method.md 11: the Adami rows carry the fluid pressure into the wall),
+//     which sit d0/2 and 3d0/2 behind the surface (s/2 and 3s/2 inside a solid box, s <= d0
+//     its lattice spacing normal to the face):
+//       p_face = p_1 + (p_1 - p_2)/2 = 3/2 p_1 - 1/2 p_2,
+//     exact for a pressure linear across the wall (hydrostatic, or any uniform
+//     acceleration);
+//   - fluid: the fluid's pressure carried to the face point x_c of the column, from the
+//     fluid neighbours f of the column's first-layer wall particle w:
+//       p_face = sum_f W_wf (p_f + rho0 g . (x_c - r_f)) / sum_f W_wf,
+//     the Adami row's hydrostatic extrapolation evaluated at the face, without the wall
+//     row's velocity term (which is a Neumann condition's penalty inside the wall, not a
+//     pressure the water feels: docs/validation.md, "Which pressure the water feels");
+//     exact on any hydrostatic field; fixed walls only.
+//   Along the face the column values are interpolated linearly (2D) or
 //   bilinearly (3D) between the columns, constant beyond the last column of an open
 //   edge (linear, the last interval continued, on a solid box's face, whose columns end
 //   s/2 before its edges), and the interpolant is averaged over the sensor exactly (segment, square: the
@@ -24,7 +33,7 @@
 //   (LowPassFilter.hpp) updated every step.
 // File wallPressure.dat: time, p, [p_lowPass], force, impulse.
 // Reads (controlDict functions/<name>): type wallPressure; wall; centre; size; shape;
-// filter { type lowPass; cutoff; }; writeControl; writeInterval.
+// faceValue; filter { type lowPass; cutoff; }; writeControl; writeInterval.
 #pragma once
 #include "functionObjects/LowPassFilter.hpp"
 #include "functionObjects/SampledFunctionObject.hpp"
@@ -38,7 +47,9 @@ namespace shizuku {
 template <int D>
 class WallPressure : public SampledFunctionObject<D> {
  public:
-  WallPressure(const std::string& name, const Dictionary& dict, const std::vector<WallBox<D>>& walls);
+  // gravity: the case's g (the fluid-side face value's hydrostatic part).
+  WallPressure(const std::string& name, const Dictionary& dict, const std::vector<WallBox<D>>& walls,
+               const Vec<D>& gravity = Vec<D>::Zero());
   void execute(const FlowState<D>& s, const RunInfo& info) override;
 
   // Mean of the linear interpolant of `values` at `nodes` (increasing; constant beyond
@@ -63,13 +74,16 @@ class WallPressure : public SampledFunctionObject<D> {
  private:
   struct Term {
     Vec<D> position;      // the wall particle's lattice position
-    double weight = 0;    // its share of the reading
+    double weight = 0;    // its share of the reading (wallLayers)
+    double share = 0;     // its column's share of the sensor's mean; 0 on the second layer
+    Vec<D> face;          // the face point of its column
     std::size_t index = 0;
     std::int64_t id = -1;
   };
   void chooseFace(const Dictionary& dict, const Vec<D>& centre);
   void buildTerms(const Dictionary& dict);
   void locate(const FlowState<D>& s);
+  double fluidFaceValue(const FlowState<D>& s, const Term& t) const;
   std::string faceName() const;
 
   WallBox<D> wall_;
@@ -77,6 +91,8 @@ class WallPressure : public SampledFunctionObject<D> {
   Vec<D> centre_ = Vec<D>::Zero();   // on the face
   double size_ = 0, area_ = 0;
   bool disc_ = false;
+  bool fromFluid_ = false;           // faceValue fluid
+  Vec<D> gravity_ = Vec<D>::Zero();
   std::vector<Term> terms_;
   bool located_ = false;                              // the terms were looked up once
   std::map<std::array<long, D>, std::size_t> termOf_;  // lattice indices (x, y[, z]) -> term

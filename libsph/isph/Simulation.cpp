@@ -42,7 +42,8 @@ Simulation<D>::Simulation(const std::string& caseDir, const SimulationOptions& o
   step_ = std::make_unique<IsphStep<D>>(s_, std::move(scheme), std::move(effects), timers_, decomposition_.get());
   step_->setMovingWalls(movingWalls_.get());
   if (opt_.functionObjects && !opt_.postProcessing)
-    functionObjects_ = createFunctionObjects<D>(files_.controlDict.subDictPtr("functions"), walls);
+    functionObjects_ = createFunctionObjects<D>(files_.controlDict.subDictPtr("functions"), walls,
+                                                physics.g);
   else if (const Dictionary* f = files_.controlDict.subDictPtr("functions"))
     f->markAllRead();
   files_.checkAllRead();

@@ -6,6 +6,8 @@
 //    level the fluid's own pressure gives (y + p/(rho g));
 //  - the same on the faces of a solid wall box (an obstacle, `solid yes`) standing on the
 //    floor, whose first two layers lie inside it, of sizes not a whole number of spacings;
+//  - every one of those sensors also with `faceValue fluid` (the fluid's pressure carried
+//    hydrostatically to the face from the first wall layer's fluid neighbours);
 //  - after the particles are reordered the reading is the same;
 //  - a sensor inside one interval between two wall columns reads the linear
 //    interpolation of the columns' face values at its midpoint; the segment weights equal
@@ -69,7 +71,9 @@ std::unique_ptr<WallPressure<D>> sensor(const std::string& entries, const WallBo
   static std::vector<Dictionary> keep;  // the objects keep pointers into their dictionaries
   keep.reserve(100);
   keep.push_back(Dictionary::fromString("type wallPressure; wall " + wall.name + "; " + entries, "test"));
-  return std::make_unique<WallPressure<D>>("sensor", keep.back(), std::vector<WallBox<D>>{wall});
+  Vec<D> g = Vec<D>::Zero();
+  g[1] = -kG;
+  return std::make_unique<WallPressure<D>>("sensor", keep.back(), std::vector<WallBox<D>>{wall}, g);
 }
 
 // The level at which the fluid's pressure is zero: y + p/(rho g), averaged over the fluid.
@@ -111,13 +115,14 @@ void checkHydrostatic(double width, double height, double depth, const std::vect
   const double H = level(sim.state());
   BOOST_TEST_MESSAGE(D << "D tank: fluid level H = " << H);
   const WallBox<D> wall = sensed ? *sensed : tankBox<D>(width, height);
-  for (const auto& sn : sensors) {
-    auto w = sensor<D>(sn.entries, wall);
-    const double p = w->pressure(sim.state()), exact = kRho * kG * (H - sn.y);
-    BOOST_TEST_CONTEXT(D << "D sensor " << sn.entries << ": p " << p << " exact " << exact) {
-      BOOST_TEST(std::abs(p - exact) <= kPressureTolerance * kRho * kG * H);
+  for (const std::string faceValue : {"", " faceValue fluid;"})
+    for (const auto& sn : sensors) {
+      auto w = sensor<D>(sn.entries + faceValue, wall);
+      const double p = w->pressure(sim.state()), exact = kRho * kG * (H - sn.y);
+      BOOST_TEST_CONTEXT(D << "D sensor " << sn.entries << faceValue << ": p " << p << " exact " << exact) {
+        BOOST_TEST(std::abs(p - exact) <= kPressureTolerance * kRho * kG * H);
+      }
     }
-  }
   // Reordered particles: the sensor finds its wall particles again, same reading.
   auto w = sensor<D>(sensors.front().entries, wall);
   const double before = w->pressure(sim.state());
