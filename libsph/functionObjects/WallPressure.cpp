@@ -69,9 +69,6 @@ WallPressure<D>::WallPressure(const std::string& name, const Dictionary& dict, c
     dict.error("wall", cat("wall '", wallName, "' has ", wall_.layers, " layer(s); the sensor extrapolates from the "
                            "first two layers to the face: give it layers 2 or more"));
   fromFluid_ = key::faceValue.read(dict) == "fluid";
-  if (fromFluid_ && wall_.motion >= 0)
-    dict.error("faceValue", cat("fluid: wall '", wallName, "' moves; the fluid-side face value is for fixed walls "
-                                "(use wallLayers)"));
   size_ = key::size.read(dict);
   if (D == 3) disc_ = key::shape.read(dict) == "disc";
   else if (dict.found("shape")) dict.error("shape", "in 2D the sensor is a segment of length `size`; shape is for 3D");
@@ -289,16 +286,32 @@ double WallPressure<D>::pressure(const FlowState<D>& s) {
   double p = 0;
   for (const auto& t : terms_) {
     if (t.id < 0) continue;
-    if (fromFluid_) p += t.share > 0 ? t.share * fluidFaceValue(s, t) : 0.0;
+    if (fromFluid_) p += t.share > 0 ? t.share * fluidFaceValue(s, t, faceOf(s, std::size_t(&t - terms_.data()))) : 0.0;
     else p += t.weight * P.pressure[t.index];
   }
   return world.sum(p);
 }
 
+// The face point of the column whose first-layer term is terms_[k]: fixed, or on a moving
+// wall r_1 + (r_1 - r_2)/2 from the two layers' current positions (the face lies d/2 in
+// front of the first layer and 3d/2 in front of the second, d the spacing across the face).
+template <int D>
+Vec<D> WallPressure<D>::faceOf(const FlowState<D>& s, std::size_t k) const {
+  const Term& t = terms_[k];
+  if (wall_.motion < 0) return t.face;
+  const Term& second = terms_[k + 1];
+  if (second.id < 0)
+    throw InputError(cat("wallPressure '", this->name(), "': faceValue fluid on the moving wall '", wall_.name,
+                         "' needs both wall layers of a column on one rank; this rank owns only the first "
+                         "(use faceValue wallLayers in a distributed run)"));
+  const auto& r = s.particles.position;
+  return r[t.index] + 0.5 * (r[t.index] - r[second.index]);
+}
+
 // sum_f W_wf (p_f + rho0 g . (x_c - r_f)) / sum_f W_wf over the fluid neighbours of the
 // column's first-layer particle w (0 without any: the wall row's p_w = 0).
 template <int D>
-double WallPressure<D>::fluidFaceValue(const FlowState<D>& s, const Term& t) const {
+double WallPressure<D>::fluidFaceValue(const FlowState<D>& s, const Term& t, const Vec<D>& face) const {
   const auto& nl = s.neighbours;
   const auto& P = s.particles;
   double sum = 0, weights = 0;
@@ -306,7 +319,7 @@ double WallPressure<D>::fluidFaceValue(const FlowState<D>& s, const Term& t) con
     const Index f = nl.j[k];
     if (!s.isFluid(std::size_t(f))) continue;
     const double wk = s.w(t.index, k);
-    sum += wk * (P.pressure[f] + s.rho0 * gravity_.dot(t.face - P.position[f]));
+    sum += wk * (P.pressure[f] + s.rho0 * gravity_.dot(face - P.position[f]));
     weights += wk;
   }
   return weights > 0 ? sum / weights : 0.0;

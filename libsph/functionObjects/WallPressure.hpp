@@ -17,7 +17,8 @@
 //     the Adami row's hydrostatic extrapolation evaluated at the face, without the wall
 //     row's velocity term (which is a Neumann condition's penalty inside the wall, not a
 //     pressure the water feels: docs/validation.md, "Which pressure the water feels");
-//     exact on any hydrostatic field; fixed walls only.
+//     exact on any hydrostatic field. On a moving wall x_c = r_1 + (r_1 - r_2)/2 from the
+//     two layers' current positions (both must be on one rank).
 //   Along the face the column values are interpolated linearly (2D) or
 //   bilinearly (3D) between the columns, constant beyond the last column of an open
 //   edge (linear, the last interval continued, on a solid box's face, whose columns end
@@ -76,14 +77,15 @@ class WallPressure : public SampledFunctionObject<D> {
     Vec<D> position;      // the wall particle's lattice position
     double weight = 0;    // its share of the reading (wallLayers)
     double share = 0;     // its column's share of the sensor's mean; 0 on the second layer
-    Vec<D> face;          // the face point of its column
+    Vec<D> face;          // the face point of its column (a fixed wall's)
     std::size_t index = 0;
     std::int64_t id = -1;
   };
   void chooseFace(const Dictionary& dict, const Vec<D>& centre);
   void buildTerms(const Dictionary& dict);
   void locate(const FlowState<D>& s);
-  double fluidFaceValue(const FlowState<D>& s, const Term& t) const;
+  Vec<D> faceOf(const FlowState<D>& s, std::size_t k) const;
+  double fluidFaceValue(const FlowState<D>& s, const Term& t, const Vec<D>& face) const;
   std::string faceName() const;
 
   WallBox<D> wall_;
