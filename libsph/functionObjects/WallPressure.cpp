@@ -25,7 +25,7 @@ const OptionParameter shape = sensor.option("shape", {"square", "disc"}, "the se
 const OptionParameter faceValue =
     sensor.option("faceValue", {"wallLayers", "fluid"},
                   "the face pressure: from the first two wall layers (3/2 p_1 - 1/2 p_2) or from the fluid next to "
-                  "the face (its pressure carried hydrostatically to the face; fixed walls)")
+                  "the face (its pressure carried hydrostatically to the face)")
         .def("wallLayers");
 const ParameterGroup filter("system/controlDict: functions/<name>/filter (type wallPressure)",
                             "Optional low-pass filter of the sensor's pressure, written as an extra column.");
@@ -283,6 +283,16 @@ double WallPressure<D>::pressure(const FlowState<D>& s) {
   // First call, or the particles were reordered (or, on several ranks, moved to another rank).
   if (world.any(!current)) locate(s);
   located_ = true;
+  if (fromFluid_ && wall_.motion >= 0) {
+    // A moving column's face point needs both of its layers on the rank owning the first.
+    bool split = false;
+    for (std::size_t k = 0; k < terms_.size(); ++k)
+      split = split || (terms_[k].id >= 0 && terms_[k].share > 0 && terms_[k + 1].id < 0);
+    if (world.any(split))
+      throw InputError(cat("wallPressure '", this->name(), "': faceValue fluid on the moving wall '", wall_.name,
+                           "' needs both wall layers of a column on one rank, and a rank owns only the first "
+                           "(use faceValue wallLayers in a distributed run)"));
+  }
   double p = 0;
   for (const auto& t : terms_) {
     if (t.id < 0) continue;
@@ -299,13 +309,8 @@ template <int D>
 Vec<D> WallPressure<D>::faceOf(const FlowState<D>& s, std::size_t k) const {
   const Term& t = terms_[k];
   if (wall_.motion < 0) return t.face;
-  const Term& second = terms_[k + 1];
-  if (second.id < 0)
-    throw InputError(cat("wallPressure '", this->name(), "': faceValue fluid on the moving wall '", wall_.name,
-                         "' needs both wall layers of a column on one rank; this rank owns only the first "
-                         "(use faceValue wallLayers in a distributed run)"));
   const auto& r = s.particles.position;
-  return r[t.index] + 0.5 * (r[t.index] - r[second.index]);
+  return r[t.index] + 0.5 * (r[t.index] - r[terms_[k + 1].index]);
 }
 
 // sum_f W_wf (p_f + rho0 g . (x_c - r_f)) / sum_f W_wf over the fluid neighbours of the
