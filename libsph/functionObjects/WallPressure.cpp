@@ -271,6 +271,15 @@ void WallPressure<D>::locate(const FlowState<D>& s) {
     throw InputError(cat("wallPressure '", this->name(), "': ", terms_.size() - found, " of the ", terms_.size(),
                          " wall particles behind the sensor on face ", faceName(), " of wall '", wall_.name,
                          "' are missing from the particles (they do not match system/particlesDict)"));
+  // A moving column's face point (faceOf) needs its second layer on the rank owning the first.
+  bool split = false;
+  if (fromFluid_ && wall_.motion >= 0)
+    for (std::size_t k = 0; k + 1 < terms_.size(); ++k)
+      split = split || (terms_[k].id >= 0 && terms_[k].share > 0 && terms_[k + 1].id < 0);
+  if (Communicator::world().any(split))
+    throw InputError(cat("wallPressure '", this->name(), "': faceValue fluid on the moving wall '", wall_.name,
+                         "' needs both wall layers of a column on one rank, and a rank owns only the first "
+                         "(use faceValue wallLayers in a distributed run)"));
 }
 
 template <int D>
@@ -283,21 +292,12 @@ double WallPressure<D>::pressure(const FlowState<D>& s) {
   // First call, or the particles were reordered (or, on several ranks, moved to another rank).
   if (world.any(!current)) locate(s);
   located_ = true;
-  if (fromFluid_ && wall_.motion >= 0) {
-    // A moving column's face point needs both of its layers on the rank owning the first.
-    bool split = false;
-    for (std::size_t k = 0; k < terms_.size(); ++k)
-      split = split || (terms_[k].id >= 0 && terms_[k].share > 0 && terms_[k + 1].id < 0);
-    if (world.any(split))
-      throw InputError(cat("wallPressure '", this->name(), "': faceValue fluid on the moving wall '", wall_.name,
-                           "' needs both wall layers of a column on one rank, and a rank owns only the first "
-                           "(use faceValue wallLayers in a distributed run)"));
-  }
   double p = 0;
-  for (const auto& t : terms_) {
+  for (std::size_t k = 0; k < terms_.size(); ++k) {
+    const Term& t = terms_[k];
     if (t.id < 0) continue;
-    if (fromFluid_) p += t.share > 0 ? t.share * fluidFaceValue(s, t, faceOf(s, std::size_t(&t - terms_.data()))) : 0.0;
-    else p += t.weight * P.pressure[t.index];
+    if (!fromFluid_) p += t.weight * P.pressure[t.index];
+    else if (t.share > 0) p += t.share * fluidFaceValue(s, t, faceOf(s, k));
   }
   return world.sum(p);
 }

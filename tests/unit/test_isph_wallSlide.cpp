@@ -21,42 +21,43 @@ using namespace shizuku;
 namespace {
 constexpr double kG = 9.81, kDt = 1e-3, kD0 = 0.02;
 
-// A tank 0.4 m wide (x, and z in 3D), 0.6 m high, open at the top, holding one fluid
-// particle at (x, y, x) with velocity u (x = 0: beside the left wall, in 3D also the
-// front wall); no viscosity, no shifting, gravity along -y.
 template <int D>
-void writeCase(test::TempCase& c, double x, double y, const std::string& u) {
-  auto vec = [](double a, double b, double z) {
-    return "(" + std::to_string(a) + " " + std::to_string(b) + (D == 3 ? " " + std::to_string(z) : "") + ")";
-  };
+std::string vec(double a, double b, double z) {
+  return "(" + std::to_string(a) + " " + std::to_string(b) + (D == 3 ? " " + std::to_string(z) : "") + ")";
+}
+
+// The case around `regions` (the body of particlesDict's regions dictionary) at spacing d0:
+// no viscosity, no shifting, gravity along -y, a direct pressure solve.
+template <int D>
+void writeCase(test::TempCase& c, double d0, const std::string& regions) {
   c.file("system/controlDict", "endTime 1; deltaT 1e-3; writeControl timeStep; writeInterval 1000;\n");
-  c.file("system/particlesDict", "spacing 0.02;\nregions {\n drop { type fluid; shape box; min " + vec(x, y, x) +
-                                     "; max " + vec(x + kD0, y + kD0, x + kD0) + "; velocity { type uniform; value " + u + "; }" +
-                                     " }\n tank { type wall; shape box; min " + vec(0, 0, 0) + "; max " +
-                                     vec(0.4, 0.6, 0.4) + "; layers 3; open (top); }\n}\n");
+  c.file("system/particlesDict", "spacing " + std::to_string(d0) + ";\nregions {\n" + regions + "}\n");
   c.file("system/sphSchemes", "derivatives SPH2;\n");
   c.file("system/sphSolution", "pressure { solver UMFPACK; }\n");
   c.file("constant/physicalProperties", "rho 1000; nu 0;\n");
   c.file("constant/g", std::string("value ") + (D == 2 ? "(0 -9.81)" : "(0 -9.81 0)") + ";\n");
 }
 
+// A tank 0.4 m wide (x, and z in 3D), 0.6 m high, open at the top, holding one fluid
+// particle at (x, y, x) with velocity u (x = 0: beside the left wall, in 3D also the
+// front wall).
+template <int D>
+void writeDropCase(test::TempCase& c, double x, double y, const std::string& u) {
+  writeCase<D>(c, kD0,
+               " drop { type fluid; shape box; min " + vec<D>(x, y, x) + "; max " + vec<D>(x + kD0, y + kD0, x + kD0) +
+                   "; velocity { type uniform; value " + u + "; } }\n tank { type wall; shape box; min " +
+                   vec<D>(0, 0, 0) + "; max " + vec<D>(0.4, 0.6, 0.4) + "; layers 3; open (top); }\n");
+}
+
 // A block filling the tank's width, `rows` deep, every particle moving down at 1 m/s.
 template <int D>
 void writeBlockCase(test::TempCase& c, int rows, double d0) {
-  auto vec = [](double a, double b, double z) {
-    return "(" + std::to_string(a) + " " + std::to_string(b) + (D == 3 ? " " + std::to_string(z) : "") + ")";
-  };
   const double width = 10 * d0;
-  c.file("system/controlDict", "endTime 1; deltaT 1e-3; writeControl timeStep; writeInterval 1000;\n");
-  c.file("system/particlesDict", "spacing " + std::to_string(d0) + ";\nregions {\n block { type fluid; shape box; min " +
-                                     vec(0, 0, 0) + "; max " + vec(width, rows * d0, width) +
-                                     "; velocity { type uniform; value " + (D == 2 ? "(0 -1)" : "(0 -1 0)") + "; } }\n" +
-                                     " tank { type wall; shape box; min " + vec(0, 0, 0) + "; max " + vec(width, 2 * rows * d0, width) +
-                                     "; layers 3; open (top); }\n}\n");
-  c.file("system/sphSchemes", "derivatives SPH2;\n");
-  c.file("system/sphSolution", "pressure { solver UMFPACK; }\n");
-  c.file("constant/physicalProperties", "rho 1000; nu 0;\n");
-  c.file("constant/g", std::string("value ") + (D == 2 ? "(0 -9.81)" : "(0 -9.81 0)") + ";\n");
+  writeCase<D>(c, d0,
+               " block { type fluid; shape box; min " + vec<D>(0, 0, 0) + "; max " + vec<D>(width, rows * d0, width) +
+                   "; velocity { type uniform; value " + (D == 2 ? "(0 -1)" : "(0 -1 0)") + "; } }\n" +
+                   " tank { type wall; shape box; min " + vec<D>(0, 0, 0) + "; max " +
+                   vec<D>(width, 2 * rows * d0, width) + "; layers 3; open (top); }\n");
 }
 
 // The largest fluid speed after one step of kDt: {over the particles farther than the
@@ -89,7 +90,7 @@ std::pair<double, double> blockSpeedsAfterOneStep(int rows, double d0) {
 template <int D>
 std::pair<Vec<D>, Vec<D>> stateAfter(double x, double y, const std::string& u, int steps) {
   test::TempCase c("wallSlide");
-  writeCase<D>(c, x, y, u);
+  writeDropCase<D>(c, x, y, u);
   SimulationOptions opt;
   opt.functionObjects = false;
   Simulation<D> sim(c.dir(), opt);
