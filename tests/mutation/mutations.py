@@ -38,7 +38,7 @@ MUTATIONS = [
     Mutation("pressureZeroOnParticles", "libsph/surface/FreeSurface.cpp",
              '"(eq. 6b), or on the particles").def("surface");',
              '"(eq. 6b), or on the particles").def("particles");',
-             [r"^unit\.test_isph_hydrostatic$", r"^regression\.hydrostaticTank$"],
+             [r"^unit\.test_isph_hydrostatic$", r"^regression\.hydrostaticTank$", r"^regression\.damBreakWallPressure$"],
              "p = 0 on the free-surface particles, d0/2 below the surface (issue 18): rho g d0/2 low"),
     Mutation("kernelConstant2D", "libsph/kernels/Kernel.cpp",
              "sigma_ = (D == 2 ? 10.0 / (7.0 * M_PI) : 1.0 / M_PI) / hD;",

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The measures of a far-wall pressure history that issue 18 compares with Buchner (2002).
 
-usage: wallPressureMeasures.py [CASE ...] [--label NAME ...] [--plot OUT.png] [--H 0.6]
+usage: wallPressureMeasures.py [CASE ...] [--label NAME ...] [--plot OUT.png] [--heights]
+                               [--plotHeights OUT.png] [--H 0.6]
        wallPressureMeasures.py --experiment CSV
 
 Time is t* = t sqrt(g/H), pressure p* = p/(rho g H). For each case folder (default: this
@@ -22,6 +23,13 @@ one) it reads postProcessing/P1/0/wallPressure.dat (raw column `p`, filtered col
              the water, so the share is zero when the pressure the sensors read is the
              force the water feels (Newton's third law at the wall); the floor's viscous
              stress and the rest of the discretisation's imbalance are in the share.
+--heights prints, at the four heights of Lobovsky et al. (2014)'s sensors scaled to this
+tank (S1, S2, S3 and P1: 6, 30, 60 and 160 mm up), the mean p* over the windows
+t* = 2.6-3, 3-3.5, 3.5-4.5, 4.5-5.5 and the plateau 3.5-5.5, for each case and for the
+references in data/ (README.md there): converged runs of the same equations by other codes
+(De Courcy et al. 2024; TrixiParticles.jl's WCSPH and EDAC, all at H/400) and two
+experiments (Lobovsky et al. 2014 at H = 0.3 m; Buchner 2002 at P1 only), and each case's
+deviation from De Courcy's plateau. --plotHeights draws the same four sensors.
 The same measures on an experiment's digitised points (a few points per unit t*: the noise
 cannot be measured there and is printed as nan; peaks from the points themselves).
 --plot draws each case's raw and filtered P1 over the two digitised experiments in data/
@@ -126,6 +134,112 @@ def impulse_balance(case, H=0.6, g=9.81, window=PLATEAU):
     return float(abs(dm - (left - far)) / far)
 
 
+# Lobovsky et al. (2014)'s sensors 1-4 scaled to H = 0.6 m, and this case's sensors there.
+HEIGHTS = (("S1", 0.006), ("S2", 0.030), ("S3", 0.060), ("P1", 0.160))
+WINDOWS = ((2.6, 3.0), (3.0, 3.5), (3.5, 4.5), (4.5, 5.5), PLATEAU)
+
+
+def window_means(t, p):
+    """Time mean of p* over each of WINDOWS: the signal linearly interpolated onto a uniform
+    grid of 0.001 in t*, since the runs' steps and the digitised curves are not uniform."""
+    return [float(np.mean(np.interp(np.arange(a, b, 0.001), t, p))) for a, b in WINDOWS]
+
+
+def references():
+    """{source: {sensor: (t*, p*)}} for the converged runs and experiments in data/."""
+    data = os.path.join(HERE, "data")
+    out = {"De Courcy 2024 (H/400)": {}}
+    d = np.genfromtxt(os.path.join(data, "deCourcy2024_sensors.csv"), delimiter=",", names=True, dtype=None,
+                      encoding="ascii")
+    for (name, _), ref in zip(HEIGHTS, ("P1", "P2", "P3", "P4")):
+        r = d[d["sensor"] == ref]
+        order = np.argsort(r["t_sqrt_g_over_H"], kind="stable")
+        out["De Courcy 2024 (H/400)"][name] = (r["t_sqrt_g_over_H"][order], r["p_over_rho_g_H"][order])
+    for scheme in ("wcsph", "edac"):
+        d = np.loadtxt(os.path.join(data, f"trixiparticles_{scheme}_H400_sensors.csv"), delimiter=",", skiprows=1)
+        out[f"TrixiParticles {scheme.upper()} (H/400)"] = {name: (d[:, 0], d[:, k + 1])
+                                                           for k, (name, _) in enumerate(HEIGHTS)}
+    d = np.loadtxt(os.path.join(data, "lobovsky2014_H300_sensors.csv.gz"), delimiter=",", skiprows=1)
+    out["Lobovsky 2014 (experiment)"] = {name: (d[:, 0], d[:, k + 1]) for k, (name, _) in enumerate(HEIGHTS)}
+    d = np.loadtxt(os.path.join(data, "buchnerP1_trixiparticles.csv"), delimiter=",", skiprows=1)
+    out["Buchner 2002 (experiment)"] = {"P1": (d[:, 0], d[:, 1])}
+    return out
+
+
+CONVERGED = ("De Courcy 2024 (H/400)", "TrixiParticles WCSPH (H/400)", "TrixiParticles EDAC (H/400)")
+
+
+def converged(refs=None):
+    """{sensor: (mean, spread)} of the plateau means of the three converged runs (spread: the
+    largest minus the smallest), the answer of the equations that the resolution study converges to."""
+    refs = refs or references()
+    out = {}
+    for name, _ in HEIGHTS:
+        v = [window_means(*refs[source][name])[-1] for source in CONVERGED]
+        out[name] = (float(np.mean(v)), float(max(v) - min(v)))
+    return out
+
+
+def heights(case, H=0.6, rho=1000.0, g=9.81):
+    """{sensor: window means} of a case at the four heights (sensors it lacks are left out)."""
+    out = {}
+    for name, _ in HEIGHTS:
+        path = os.path.join(case, "postProcessing", name, "0", "wallPressure.dat")
+        if os.path.exists(path):
+            t, p, _ = read_run(path, H, rho, g)
+            out[name] = window_means(t, p)
+    return out
+
+
+def print_heights(cases, labels, H, rho, g):
+    refs = references()
+    conv = converged(refs)
+    print("mean p* over t* = " + ", ".join("%g-%g" % w for w in WINDOWS) + " (the last: the plateau)")
+    for name, y in HEIGHTS:
+        print(f"{name} ({1000 * y:.0f} mm up, {y / H:.3f} H):")
+        for source, sensors in refs.items():
+            if name in sensors:
+                print("  %-34s %s" % (source, " ".join("%6.3f" % v for v in window_means(*sensors[name]))))
+        for case, label in zip(cases, labels):
+            m = heights(case, H, rho, g).get(name)
+            if m:
+                print("  %-34s %s   plateau %+.1f %% from the converged runs' %.3f (spread %.3f)"
+                      % (label, " ".join("%6.3f" % v for v in m), 100 * (m[-1] / conv[name][0] - 1), *conv[name]))
+
+
+def plot_heights(cases, labels, out, H, rho, g):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    refs = references()
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
+    styles = {"De Courcy 2024 (H/400)": dict(color="k", lw=1.6),
+              "TrixiParticles WCSPH (H/400)": dict(color="0.45", lw=1.0, ls="--"),
+              "TrixiParticles EDAC (H/400)": dict(color="0.45", lw=1.0, ls=":"),
+              "Lobovsky 2014 (experiment)": dict(color="tab:red", lw=0.5, alpha=0.6),
+              "Buchner 2002 (experiment)": dict(color="tab:red", marker="o", ms=3, mfc="none", ls="none")}
+    for ax, (name, y) in zip(axes.flat, HEIGHTS):
+        for source, sensors in refs.items():
+            if name in sensors:
+                ax.plot(*sensors[name], label=source, **styles[source])
+        for case, label in zip(cases, labels):
+            path = os.path.join(case, "postProcessing", name, "0", "wallPressure.dat")
+            if os.path.exists(path):
+                t, p, _ = read_run(path, H, rho, g)
+                ax.plot(t, moving_average(t, p, 0.05), lw=1.0, label=label + " (0.05 moving average)")
+        ax.set_title(f"{name}: {1000 * y:.0f} mm up ({y / H:.3f} H)", fontsize=9)
+        ax.set_xlim(2, 7.5)
+        ax.set_ylim(-0.2, 2.5 if y < 0.1 else 1.6)
+        ax.set_ylabel("p / (rho g H)")
+    for ax in axes[1]:
+        ax.set_xlabel("t sqrt(g/H)")
+    axes[0, 0].legend(fontsize=6, loc="upper right")
+    axes[1, 1].legend(fontsize=6, loc="upper left")
+    os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
+    fig.savefig(out, dpi=120, bbox_inches="tight")
+    print(f"{out}: four sensor heights of {len(cases)} run(s) against the converged runs and the experiments")
+
+
 def plot(cases, labels, out, H, rho, g):
     import matplotlib
     matplotlib.use("Agg")
@@ -154,6 +268,8 @@ def main():
     ap.add_argument("--label", nargs="*")
     ap.add_argument("--plot")
     ap.add_argument("--experiment")
+    ap.add_argument("--heights", action="store_true")
+    ap.add_argument("--plotHeights")
     ap.add_argument("--H", type=float, default=0.6)
     ap.add_argument("--rho", type=float, default=1000.0)
     ap.add_argument("--g", type=float, default=9.81)
@@ -169,6 +285,11 @@ def main():
                          balance=impulse_balance(c, a.H, a.g))) for c in a.cases]
     for name, res in rows:
         print(name + ": " + " ".join("%s %.4g" % kv for kv in res.items()))
+    labels = a.label or a.cases
+    if a.heights:
+        print_heights(a.cases, labels, a.H, a.rho, a.g)
+    if a.plotHeights:
+        plot_heights(a.cases, labels, a.plotHeights, a.H, a.rho, a.g)
     if a.plot:
         plot(a.cases, a.label or a.cases, a.plot, a.H, a.rho, a.g)
     return 0

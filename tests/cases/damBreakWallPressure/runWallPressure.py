@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The Buchner (2002) dam-break impact against the far wall (tutorials/damBreakWallPressure):
-sensor P1 against the experiment (ctest regression.damBreakWallPressure at d0 = H/30,
+sensor P1 against the experiment, and four sensor heights against converged runs of other codes (ctest regression.damBreakWallPressure at d0 = H/30,
 long.damBreakWallPressure at the tutorial's H/60). Numbers in the tutorial's README.md.
 
 usage: runWallPressure.py TUTORIAL WORK --shizuku BIN --compare SHIZUKUCOMPARE
@@ -37,6 +37,20 @@ H/30, H/60 and H/120, the H/30 trajectories on 1 and 2 threads with solver toler
     written every step here) at most 0.05: 0.002-0.011, 0.0008 and 0.0001, 0.00006; the same
     sensors reading the wall layers 0.13-0.16 over four H/30 trajectories and 0.11, 0.13 at
     H/60 (they read more than the water feels), and fail.
+The same equations solved by other codes, converged (De Courcy et al. 2024 and
+TrixiParticles.jl's WCSPH and EDAC, all at H/400; the tutorial's data/README.md), give P1's
+plateau 0.392-0.400, and both experiments (Buchner 0.538, Lobovsky et al. 2014 0.520) lie
+above every one of them: the experiment bounds above ask for physics the 2D one-phase model
+does not have (docs/validation.md, "The converged model against two experiments"). What is
+asserted against them:
+  - the plateau mean at each of the four heights of Lobovsky's sensors (S1, S2, S3, P1:
+    6, 30, 60 and 160 mm) within 10 % (H/30) or 7 % (--full, H/60) of the mean of the three
+    converged runs' plateaus. Measured (2026-12-06): H/30 -2.8, -5.0, -4.9, -0.4 % on one
+    thread and -4.1, -7.3, -4.6, -1.5 % on two; H/60 -4.0, -3.5, -2.8, -0.1 %; H/120 -5.2,
+    -3.7, -1.1, +3.1 %; the three converged runs themselves spread by 3.7, 1.8, 1.6 and 2.3 %
+    of their mean. The surface condition on the particles (p = 0 half a spacing too low,
+    `pressureCondition particles`) gives -4.0, -7.1, -9.3 and -15.0 % at H/30 and fails;
+    P1 read from the wall layers gives +36 % and fails.
 """
 import os
 import sys
@@ -50,6 +64,7 @@ ISSUE_NOISE = 0.02
 GUARD = {"crossing": 0.06, "plateau": 0.35}
 GUARD_PEAK1, GUARD_NOISE = 2.0, 0.10
 GUARD_BALANCE = 0.05
+GUARD_CONVERGED = {False: 0.10, True: 0.07}
 
 
 def main():
@@ -74,6 +89,14 @@ def main():
         st.check(abs(dev) <= tol, f"P1 {key} {m[key]:.3f} within {100 * tol:.0f} % of {EXPERIMENT[key]} ({100 * dev:+.1f} %)")
     st.check(m["peak1"] <= GUARD_PEAK1, f"P1 first peak (100 Hz low-pass) {m['peak1']:.3f} at most {GUARD_PEAK1} rho g H")
     st.check(m["noise"] <= GUARD_NOISE, f"P1 plateau noise {m['noise']:.4f} at most {GUARD_NOISE} rho g H")
+    converged, tol = measures.converged(), GUARD_CONVERGED[bool(a.full)]
+    reached = measures.heights(case)
+    for name, y in measures.HEIGHTS:
+        mean, spread = converged[name]
+        dev = reached[name][-1] / mean - 1
+        st.check(abs(dev) <= tol,
+                 f"{name} ({1000 * y:.0f} mm up) plateau {reached[name][-1]:.3f} within {100 * tol:.0f} % of "
+                 f"the converged runs' {mean:.3f} (spread {spread:.3f}): {100 * dev:+.1f} %")
     balance = measures.impulse_balance(case)
     st.check(balance <= GUARD_BALANCE, f"far and left walls' impulse over the plateau against the water's change of "
              f"x momentum: {100 * balance:.2f} % of the far wall's impulse apart, at most {100 * GUARD_BALANCE:.0f} %")
