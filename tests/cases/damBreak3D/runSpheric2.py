@@ -16,8 +16,9 @@ The bounds come from the resolution study (d0 = 5, 2.5 and 2 cm; docs/validation
 "SPHERIC Test 2"): the coarse run's errors with room for the second thread's different
 trajectory. Full size: the arrival bounds are the 2.5 cm run's errors, the height bounds the
 5 cm run's over the same 2 s (H2 0.0286 m, H4 0.0085 m; the 2 cm run: 0.022 and 0.0065 m,
-2026-12-03). Pressure peaks are printed, not asserted (the
-wall-pressure noise of issue 18).
+2026-12-03; 0.0304 and 0.0061 m on 2026-12-06, after the solver changes of 2026-12-04 and 05,
+which fails H2: docs/validation.md, "SPHERIC Test 2"). Pressure peaks are printed, not asserted
+(the wall-pressure noise of issue 18); the sensors read the fluid (`faceValue fluid`).
 """
 import os
 import sys
