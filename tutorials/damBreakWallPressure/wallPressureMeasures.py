@@ -29,7 +29,8 @@ t* = 2.6-3, 3-3.5, 3.5-4.5, 4.5-5.5 and the plateau 3.5-5.5, for each case and f
 references in data/ (README.md there): converged runs of the same equations by other codes
 (De Courcy et al. 2024; TrixiParticles.jl's WCSPH and EDAC, all at H/400) and two
 experiments (Lobovsky et al. 2014 at H = 0.3 m; Buchner 2002 at P1 only), and each case's
-deviation from De Courcy's plateau. --plotHeights draws the same four sensors.
+deviation from the mean of the three converged runs' plateaus. --plotHeights draws the same
+four sensors.
 The same measures on an experiment's digitised points (a few points per unit t*: the noise
 cannot be measured there and is printed as nan; peaks from the points themselves).
 --plot draws each case's raw and filtered P1 over the two digitised experiments in data/
@@ -180,15 +181,16 @@ def converged(refs=None):
     return out
 
 
+def sensor_history(case, name, H=0.6, rho=1000.0, g=9.81):
+    """(t*, raw p*) of a case's wallPressure sensor `name`, or None when the case has none."""
+    path = os.path.join(case, "postProcessing", name, "0", "wallPressure.dat")
+    return read_run(path, H, rho, g)[:2] if os.path.exists(path) else None
+
+
 def heights(case, H=0.6, rho=1000.0, g=9.81):
     """{sensor: window means} of a case at the four heights (sensors it lacks are left out)."""
-    out = {}
-    for name, _ in HEIGHTS:
-        path = os.path.join(case, "postProcessing", name, "0", "wallPressure.dat")
-        if os.path.exists(path):
-            t, p, _ = read_run(path, H, rho, g)
-            out[name] = window_means(t, p)
-    return out
+    histories = {name: sensor_history(case, name, H, rho, g) for name, _ in HEIGHTS}
+    return {name: window_means(*h) for name, h in histories.items() if h is not None}
 
 
 def print_heights(cases, labels, H, rho, g):
@@ -223,10 +225,9 @@ def plot_heights(cases, labels, out, H, rho, g):
             if name in sensors:
                 ax.plot(*sensors[name], label=source, **styles[source])
         for case, label in zip(cases, labels):
-            path = os.path.join(case, "postProcessing", name, "0", "wallPressure.dat")
-            if os.path.exists(path):
-                t, p, _ = read_run(path, H, rho, g)
-                ax.plot(t, moving_average(t, p, 0.05), lw=1.0, label=label + " (0.05 moving average)")
+            h = sensor_history(case, name, H, rho, g)
+            if h is not None:
+                ax.plot(h[0], moving_average(*h, 0.05), lw=1.0, label=label + " (0.05 moving average)")
         ax.set_title(f"{name}: {1000 * y:.0f} mm up ({y / H:.3f} H)", fontsize=9)
         ax.set_xlim(2, 7.5)
         ax.set_ylim(-0.2, 2.5 if y < 0.1 else 1.6)
