@@ -23,10 +23,11 @@ const ScalarParameter size =
 const OptionParameter shape = sensor.option("shape", {"square", "disc"}, "the sensor's shape in 3D (2D: a segment)")
                                   .def("square");
 const OptionParameter faceValue =
-    sensor.option("faceValue", {"wallLayers", "fluid"},
+    sensor.option("faceValue", {"auto", "wallLayers", "fluid"},
                   "the face pressure: from the first two wall layers (3/2 p_1 - 1/2 p_2) or from the fluid next to "
-                  "the face (its pressure carried hydrostatically to the face)")
-        .def("wallLayers");
+                  "the face (its pressure carried hydrostatically to the face); auto: from the fluid on a fixed wall, "
+                  "from the wall layers on a moving one")
+        .def("auto");
 const ParameterGroup filter("system/controlDict: functions/<name>/filter (type wallPressure)",
                             "Optional low-pass filter of the sensor's pressure, written as an extra column.");
 const OptionParameter filterType =
@@ -68,7 +69,10 @@ WallPressure<D>::WallPressure(const std::string& name, const Dictionary& dict, c
   if (wall_.layers < 2)
     dict.error("wall", cat("wall '", wallName, "' has ", wall_.layers, " layer(s); the sensor extrapolates from the "
                            "first two layers to the face: give it layers 2 or more"));
-  fromFluid_ = key::faceValue.read(dict) == "fluid";
+  // The fluid's reading is the pressure the water feels (docs/postprocessing.md); on a moving
+  // wall it needs both layers of a column on one rank, so auto keeps the wall layers there.
+  const std::string faceValue = key::faceValue.read(dict);
+  fromFluid_ = faceValue == "fluid" || (faceValue == "auto" && wall_.motion < 0);
   size_ = key::size.read(dict);
   if (D == 3) disc_ = key::shape.read(dict) == "disc";
   else if (dict.found("shape")) dict.error("shape", "in 2D the sensor is a segment of length `size`; shape is for 3D");

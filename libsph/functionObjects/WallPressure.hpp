@@ -3,8 +3,9 @@
 //   The sensor lies on the face of wall `wall` on which `centre` lies (within d0/2 of a
 //   closed face of its surface): in 2D a segment of length `size` along the face, in 3D
 //   a square of side `size` (or `shape disc;`, a disc of diameter `size`).
-//   The face pressure at each wall column (`faceValue`):
-//   - wallLayers (default): extrapolated from the PPE's pressure of the first two wall
+//   The face pressure at each wall column (`faceValue`; auto, the default: fluid on a
+//   fixed wall, wallLayers on a moving one):
+//   - wallLayers: extrapolated from the PPE's pressure of the first two wall
 //     layers (docs/method.md 11: the Adami rows carry the fluid pressure into the wall),
 //     which sit d0/2 and 3d0/2 behind the surface (s/2 and 3s/2 inside a solid box, s <= d0
 //     its lattice spacing normal to the face):
@@ -93,7 +94,7 @@ class WallPressure : public SampledFunctionObject<D> {
   Vec<D> centre_ = Vec<D>::Zero();   // on the face
   double size_ = 0, area_ = 0;
   bool disc_ = false;
-  bool fromFluid_ = false;           // faceValue fluid
+  bool fromFluid_ = false;           // faceValue fluid (or auto on a fixed wall)
   Vec<D> gravity_ = Vec<D>::Zero();
   std::vector<Term> terms_;
   bool located_ = false;                              // the terms were looked up once

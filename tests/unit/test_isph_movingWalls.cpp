@@ -92,6 +92,12 @@ void sensorsAgree(Simulation<D>& a, Simulation<D>& b) {
     // Round-off, as the pressures above; the rest position's face point is 471 Pa off.
     BOOST_TEST(std::abs(pa - pb) < 1e-9 * 1000 * 9.81 * 0.12);
   }
+  // Without faceValue (auto) the moving tank's sensor reads the wall layers, the fixed one's the fluid.
+  const Dictionary byDefault = Dictionary::fromString("type wallPressure; wall tank; centre " +
+                                                      vec<D>(0.3, 0.05, 0.15) + "; size 0.013;", "test");
+  WallPressure<D> fixedAuto("f", byDefault, {tankBox<D>(false)}, g), movingAuto("m", byDefault, {tankBox<D>(true)}, g);
+  BOOST_TEST(fixedAuto.describe().find("face value from the fluid") != std::string::npos);
+  BOOST_TEST(movingAuto.describe().find("face value from the fluid") == std::string::npos);
 }
 
 template <int D>

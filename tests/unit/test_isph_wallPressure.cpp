@@ -6,8 +6,9 @@
 //    level the fluid's own pressure gives (y + p/(rho g));
 //  - the same on the faces of a solid wall box (an obstacle, `solid yes`) standing on the
 //    floor, whose first two layers lie inside it, of sizes not a whole number of spacings;
-//  - every one of those sensors also with `faceValue fluid` (the fluid's pressure carried
-//    hydrostatically to the face from the first wall layer's fluid neighbours);
+//  - every one of those sensors both with `faceValue wallLayers` and with `faceValue fluid`
+//    (the fluid's pressure carried hydrostatically to the face from the first wall layer's
+//    fluid neighbours), and without faceValue a sensor on a fixed wall reads the fluid;
 //  - after the particles are reordered the reading is the same;
 //  - a sensor inside one interval between two wall columns reads the linear
 //    interpolation of the columns' face values at its midpoint; the segment weights equal
@@ -115,7 +116,7 @@ void checkHydrostatic(double width, double height, double depth, const std::vect
   const double H = level(sim.state());
   BOOST_TEST_MESSAGE(D << "D tank: fluid level H = " << H);
   const WallBox<D> wall = sensed ? *sensed : tankBox<D>(width, height);
-  for (const std::string faceValue : {"", " faceValue fluid;"})
+  for (const std::string faceValue : {" faceValue wallLayers;", " faceValue fluid;"})
     for (const auto& sn : sensors) {
       auto w = sensor<D>(sn.entries + faceValue, wall);
       const double p = w->pressure(sim.state()), exact = kRho * kG * (H - sn.y);
@@ -123,8 +124,10 @@ void checkHydrostatic(double width, double height, double depth, const std::vect
         BOOST_TEST(std::abs(p - exact) <= kPressureTolerance * kRho * kG * H);
       }
     }
+  // Without faceValue a sensor on a fixed wall reads the fluid (auto).
+  BOOST_TEST(sensor<D>(sensors.front().entries, wall)->describe().find("face value from the fluid") != std::string::npos);
   // Reordered particles: the sensor finds its wall particles again, same reading.
-  auto w = sensor<D>(sensors.front().entries, wall);
+  auto w = sensor<D>(sensors.front().entries + " faceValue wallLayers;", wall);
   const double before = w->pressure(sim.state());
   reverseOrder(sim.state());
   BOOST_TEST(w->pressure(sim.state()) == before);
@@ -230,7 +233,7 @@ BOOST_AUTO_TEST_CASE(sensor_between_two_columns_reads_the_linear_interpolation) 
   const WallBox<2> wall = tankBox<2>(0.4, 0.5);
   for (double t : {0.1, 0.25, 0.5, 0.77, 0.9}) {
     const double yk = 0.11, mid = yk + t * kD0;
-    auto w = sensor<2>("centre (0.4 " + std::to_string(mid) + "); size 0.004;", wall);
+    auto w = sensor<2>("centre (0.4 " + std::to_string(mid) + "); size 0.004; faceValue wallLayers;", wall);
     const double tt = (std::stod(std::to_string(mid)) - yk) / kD0;
     const double exact = (1 - tt) * g(yk) + tt * g(yk + kD0);
     BOOST_TEST_CONTEXT("t = " << t) { BOOST_TEST(std::abs(w->pressure(sim.state()) - exact) < 1e-9 * std::abs(exact)); }
@@ -332,7 +335,7 @@ void checkForceAndImpulse(const std::string& entries, double area) {
   const double p0 = 1234.5;
   for (std::size_t i = 0; i < s.size(); ++i)
     if (s.particles.isWall(i)) s.particles.pressure[i] = p0;
-  auto w = sensor<D>(entries + " filter { type lowPass; cutoff 20 [Hz]; }", tankBox<D>(0.2, 0.3));
+  auto w = sensor<D>(entries + " faceValue wallLayers; filter { type lowPass; cutoff 20 [Hz]; }", tankBox<D>(0.2, 0.3));
   BOOST_TEST(w->area() == area, boost::test_tools::tolerance(1e-14));
   RunInfo info;
   info.caseDir = c.dir();
