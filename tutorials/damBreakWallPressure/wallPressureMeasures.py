@@ -196,14 +196,15 @@ def heights(case, H=0.6, rho=1000.0, g=9.81):
 def print_heights(cases, labels, H, rho, g):
     refs = references()
     conv = converged(refs)
+    reached = [heights(case, H, rho, g) for case in cases]
     print("mean p* over t* = " + ", ".join("%g-%g" % w for w in WINDOWS) + " (the last: the plateau)")
     for name, y in HEIGHTS:
         print(f"{name} ({1000 * y:.0f} mm up, {y / H:.3f} H):")
         for source, sensors in refs.items():
             if name in sensors:
                 print("  %-34s %s" % (source, " ".join("%6.3f" % v for v in window_means(*sensors[name]))))
-        for case, label in zip(cases, labels):
-            m = heights(case, H, rho, g).get(name)
+        for label, means in zip(labels, reached):
+            m = means.get(name)
             if m:
                 print("  %-34s %s   plateau %+.1f %% from the converged runs' %.3f (spread %.3f)"
                       % (label, " ".join("%6.3f" % v for v in m), 100 * (m[-1] / conv[name][0] - 1), *conv[name]))

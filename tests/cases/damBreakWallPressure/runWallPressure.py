@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The Buchner (2002) dam-break impact against the far wall (tutorials/damBreakWallPressure):
-sensor P1 against the experiment, and four sensor heights against converged runs of other codes (ctest regression.damBreakWallPressure at d0 = H/30,
-long.damBreakWallPressure at the tutorial's H/60). Numbers in the tutorial's README.md.
+sensor P1 against the experiment, and four sensor heights against converged runs of other
+codes (ctest regression.damBreakWallPressure at d0 = H/30, long.damBreakWallPressure at the
+tutorial's H/60). Numbers in the tutorial's README.md.
 
 usage: runWallPressure.py TUTORIAL WORK --shizuku BIN --compare SHIZUKUCOMPARE
                           [--threads N] [--full]
