@@ -6,8 +6,9 @@
 // handed to generateParticles<D> with a cap of 1e5 particles, the
 // generator's own limit (maxParticles, checked before anything is allocated),
 // lowered so each input runs in milliseconds. Bad input must end in
-// InputError; the particles made must be finite, fluid first, with ids
-// 0..n-1. Anything else (another exception, a sanitizer report, a crash, a
+// InputError; the particles made must be finite, of a known type, in the
+// generator's order (fluid, then walls, then inlet and outlet buffers), with
+// ids 0..n-1. Anything else (another exception, a sanitizer report, a crash, a
 // hang) is a bug.
 //
 // Built two ways (fuzz/CMakeLists.txt): as a libFuzzer target and as a
@@ -29,13 +30,15 @@ template <int D> void generate(const Dictionary& d) {
   const GeneratedParticles<D> g = generateParticles<D>(d, kCap);
   const ParticleSet<D>& s = g.set;
   if (double(s.size()) > kCap) std::abort();  // the limit was not kept
-  bool wall = false;
+  // Rank in the generator's order: fluid 0, wall 1, an inlet's or outlet's buffer 2.
+  const auto rank = [](std::uint8_t t) { return t < std::uint8_t(ParticleType::inlet) ? int(t) : 2; };
+  int previous = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (!s.position[i].allFinite() || !s.velocity[i].allFinite()) std::abort();
     if (s.id[i] != std::int64_t(i)) std::abort();
-    const bool isWall = s.type[i] == std::uint8_t(ParticleType::wall);
-    if (wall && !isWall) std::abort();  // fluid first, then walls
-    wall = wall || isWall;
+    if (s.type[i] > std::uint8_t(ParticleType::outlet)) std::abort();
+    if (rank(s.type[i]) < previous) std::abort();  // fluid, then walls, then buffers
+    previous = rank(s.type[i]);
   }
 }
 

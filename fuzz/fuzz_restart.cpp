@@ -7,9 +7,10 @@
 // scratch case as 0.002/particles.vtp and 0.002/uniform/time; the time file
 // is read on its own, the vtp on its own, and, when the time file was read,
 // the whole time directory. Bad input must end in InputError; what a read
-// returns must hold what the checks promise (finite values, fluid or wall
-// types, unique ids >= 0, finite time, index >= 0, time steps >= 0). Anything
-// else (another exception, a sanitizer report, a crash, a hang) is a bug.
+// returns must hold what the checks promise (finite values, types fluid,
+// wall, inlet or outlet, unique ids >= 0, finite time, index >= 0, time
+// steps >= 0). Anything else (another exception, a sanitizer report, a
+// crash, a hang) is a bug.
 //
 // Built two ways (fuzz/CMakeLists.txt): as a libFuzzer target and as a
 // corpus-replay program run by ctest. Seeds: tests/badInput/makeRestartCases.py.
@@ -65,7 +66,7 @@ void checkParticles(const ParticleSet<2>& p) {
   if (!(p.mass > 0) || !(p.rho0 > 0) || !(p.spacing > 0) || !std::isfinite(p.mass)) std::abort();
   for (std::size_t i = 0; i < n; ++i) {
     if (!p.position[i].allFinite() || !p.velocity[i].allFinite() || !std::isfinite(p.pressure[i])) std::abort();
-    if (p.type[i] > 1 || p.id[i] < 0) std::abort();
+    if (p.type[i] > std::uint8_t(ParticleType::outlet) || p.id[i] < 0) std::abort();
   }
   std::vector<std::int64_t> ids = p.id;
   std::sort(ids.begin(), ids.end());
