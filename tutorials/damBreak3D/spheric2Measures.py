@@ -10,7 +10,8 @@ first-order low-pass at 100 Hz) and the gauges postProcessing/gauges/0/height.da
 passed through the same 100 Hz first-order filter (the same measure on both sides; the
 heights are compared unfiltered). Up to the case's last time (or --until) it prints:
   H1..H3 arrival   first t where the height exceeds 0.02 m (the front reaching the gauge)
-  H1..H4 error     rms of h_run - h_exp over the run, on the experiment's 1 kHz times (m)
+  H1..H4 error     rms of h_run - h_exp over the run, on the experiment's 1 kHz times (m;
+                   height_error gives it over any window)
   P1..P8 arrival   first t where the filtered pressure exceeds 500 Pa
   P1..P8 peak      largest filtered pressure and its time
 for the run and the experiment side by side. --plot PREFIX draws PREFIX_heights.png and
@@ -83,6 +84,14 @@ def first_above(t, v, level):
     return float(t[i[0]]) if len(i) else float("nan")
 
 
+def height_error(run, exp, name, start, end):
+    """rms of h_run - h_exp at gauge `name` over the experiment's times in (start, end] (m)."""
+    tr, hr = run[name]
+    te, he = exp[name]
+    m = (te > start) & (te <= min(end, tr[-1]))
+    return float(np.sqrt(np.mean((np.interp(te[m], tr, hr) - he[m]) ** 2)))
+
+
 def measures(run, exp, until):
     """{name: {measure: (run, experiment)}} up to time `until`."""
     out = {}
@@ -90,8 +99,7 @@ def measures(run, exp, until):
         tr, hr = run[name]
         te, he = exp[name]
         m = te <= until
-        err = np.interp(te[m], tr, hr) - he[m]
-        out[name] = {"error": (float(np.sqrt(np.mean(err ** 2))), 0.0)}
+        out[name] = {"error": (height_error(run, exp, name, -np.inf, until), 0.0)}
         if name != "H4":
             out[name]["arrival"] = (first_above(tr, hr, WET), first_above(te[m], he[m], WET))
     for name in SENSORS:
