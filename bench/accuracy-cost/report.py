@@ -60,6 +60,9 @@ MEASURE_TEXT = {
     "peak1Error": "relative error of the first peak of P1 low-pass filtered at 100 Hz (experiment: 0.687)",
     "plateauError": "relative error of P1's mean over 3.5 <= t sqrt(g/H) <= 5.5 (experiment: 0.538)",
     "peak2Error": "relative error of the second peak of P1 low-pass filtered at 100 Hz (experiment: 0.877)",
+    "plateauConvergedError": "the largest relative error of the plateau mean (3.5 <= t sqrt(g/H) <= 5.5) at the "
+                             "four heights S1, S2, S3, P1 against the mean of three converged runs of the same "
+                             "equations at H/400 (the tutorial's data/README.md; the sensors read the fluid)",
     "centrePressure": "centre pressure: max |p(0,0) - p_c| / |p_c| over 0.016 <= t <= 0.05 s, "
                       "p_c = -0.147342707 rho omega^2 (L - d0)^2 (p = 0 sits on the outer particle row, "
                       "so the effective side is L - d0; tests/cases/README.md)",
