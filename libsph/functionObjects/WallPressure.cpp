@@ -3,6 +3,7 @@
 #include "parallel/Communicator.hpp"
 #include "core/Parameter.hpp"
 #include "particles/WallLattice.hpp"
+#include "particles/WallMotion.hpp"
 #include <algorithm>
 #include <cmath>
 
@@ -23,11 +24,11 @@ const ScalarParameter size =
 const OptionParameter shape = sensor.option("shape", {"square", "disc"}, "the sensor's shape in 3D (2D: a segment)")
                                   .def("square");
 const OptionParameter faceValue =
-    sensor.option("faceValue", {"auto", "wallLayers", "fluid"},
-                  "the face pressure: from the first two wall layers (3/2 p_1 - 1/2 p_2) or from the fluid next to "
-                  "the face (its pressure carried hydrostatically to the face); auto: from the fluid on a fixed wall, "
-                  "from the wall layers on a moving one")
-        .def("auto");
+    sensor.option("faceValue", {"fluid", "wallLayers", "auto"},
+                  "the face pressure: from the fluid next to the face (its pressure carried hydrostatically to the "
+                  "face: the pressure the water feels) or from the first two wall layers (3/2 p_1 - 1/2 p_2); "
+                  "auto: the same as fluid")
+        .def("fluid");
 const ParameterGroup filter("system/controlDict: functions/<name>/filter (type wallPressure)",
                             "Optional low-pass filter of the sensor's pressure, written as an extra column.");
 const OptionParameter filterType =
@@ -69,10 +70,8 @@ WallPressure<D>::WallPressure(const std::string& name, const Dictionary& dict, c
   if (wall_.layers < 2)
     dict.error("wall", cat("wall '", wallName, "' has ", wall_.layers, " layer(s); the sensor extrapolates from the "
                            "first two layers to the face: give it layers 2 or more"));
-  // The fluid's reading is the pressure the water feels (docs/postprocessing.md); on a moving
-  // wall it needs both layers of a column on one rank, so auto keeps the wall layers there.
-  const std::string faceValue = key::faceValue.read(dict);
-  fromFluid_ = faceValue == "fluid" || (faceValue == "auto" && wall_.motion < 0);
+  // The fluid's reading is the pressure the water feels (docs/postprocessing.md).
+  fromFluid_ = key::faceValue.read(dict) != "wallLayers";
   size_ = key::size.read(dict);
   if (D == 3) disc_ = key::shape.read(dict) == "disc";
   else if (dict.found("shape")) dict.error("shape", "in 2D the sensor is a segment of length `size`; shape is for 3D");
@@ -275,15 +274,6 @@ void WallPressure<D>::locate(const FlowState<D>& s) {
     throw InputError(cat("wallPressure '", this->name(), "': ", terms_.size() - found, " of the ", terms_.size(),
                          " wall particles behind the sensor on face ", faceName(), " of wall '", wall_.name,
                          "' are missing from the particles (they do not match system/particlesDict)"));
-  // A moving column's face point (faceOf) needs its second layer on the rank owning the first.
-  bool split = false;
-  if (fromFluid_ && wall_.motion >= 0)
-    for (std::size_t k = 0; k + 1 < terms_.size(); ++k)
-      split = split || (terms_[k].id >= 0 && terms_[k].share > 0 && terms_[k + 1].id < 0);
-  if (Communicator::world().any(split))
-    throw InputError(cat("wallPressure '", this->name(), "': faceValue fluid on the moving wall '", wall_.name,
-                         "' needs both wall layers of a column on one rank, and a rank owns only the first "
-                         "(use faceValue wallLayers in a distributed run)"));
 }
 
 template <int D>
@@ -301,20 +291,17 @@ double WallPressure<D>::pressure(const FlowState<D>& s) {
     const Term& t = terms_[k];
     if (t.id < 0) continue;
     if (!fromFluid_) p += t.weight * P.pressure[t.index];
-    else if (t.share > 0) p += t.share * fluidFaceValue(s, t, faceOf(s, k));
+    else if (t.share > 0) p += t.share * fluidFaceValue(s, t, faceOf(s, t));
   }
   return world.sum(p);
 }
 
-// The face point of the column whose first-layer term is terms_[k]: fixed, or on a moving
-// wall r_1 + (r_1 - r_2)/2 from the two layers' current positions (the face lies d/2 in
-// front of the first layer and 3d/2 in front of the second, d the spacing across the face).
+// The face point of term t's column now: its rest face point, moved on a moving wall by the
+// wall's current pose (the same on every rank, so no other particle is needed).
 template <int D>
-Vec<D> WallPressure<D>::faceOf(const FlowState<D>& s, std::size_t k) const {
-  const Term& t = terms_[k];
-  if (wall_.motion < 0) return t.face;
-  const auto& r = s.particles.position;
-  return r[t.index] + 0.5 * (r[t.index] - r[terms_[k + 1].index]);
+Vec<D> WallPressure<D>::faceOf(const FlowState<D>& s, const Term& t) const {
+  if (wall_.motion < 0 || !s.wallPoses) return t.face;
+  return (*s.wallPoses)[std::size_t(wall_.motion)].position(t.face);
 }
 
 // sum_f W_wf (p_f + rho0 g . (x_c - r_f)) / sum_f W_wf over the fluid neighbours of the

@@ -3,8 +3,8 @@
 //   The sensor lies on the face of wall `wall` on which `centre` lies (within d0/2 of a
 //   closed face of its surface): in 2D a segment of length `size` along the face, in 3D
 //   a square of side `size` (or `shape disc;`, a disc of diameter `size`).
-//   The face pressure at each wall column (`faceValue`; auto, the default: fluid on a
-//   fixed wall, wallLayers on a moving one):
+//   The face pressure at each wall column (`faceValue`: fluid, the default, or
+//   wallLayers; auto is the same as fluid):
 //   - wallLayers: extrapolated from the PPE's pressure of the first two wall
 //     layers (docs/method.md 11: the Adami rows carry the fluid pressure into the wall),
 //     which sit d0/2 and 3d0/2 behind the surface (s/2 and 3s/2 inside a solid box, s <= d0
@@ -18,8 +18,8 @@
 //     the Adami row's hydrostatic extrapolation evaluated at the face, without the wall
 //     row's velocity term (which is a Neumann condition's penalty inside the wall, not a
 //     pressure the water feels: docs/validation.md, "Which pressure the water feels");
-//     exact on any hydrostatic field. On a moving wall x_c = r_1 + (r_1 - r_2)/2 from the
-//     two layers' current positions (both must be on one rank).
+//     exact on any hydrostatic field. On a moving wall x_c is the rest face point moved by
+//     the wall's current pose (FlowState::wallPoses).
 //   Along the face the column values are interpolated linearly (2D) or
 //   bilinearly (3D) between the columns, constant beyond the last column of an open
 //   edge (linear, the last interval continued, on a solid box's face, whose columns end
@@ -78,14 +78,14 @@ class WallPressure : public SampledFunctionObject<D> {
     Vec<D> position;      // the wall particle's lattice position
     double weight = 0;    // its share of the reading (wallLayers)
     double share = 0;     // its column's share of the sensor's mean; 0 on the second layer
-    Vec<D> face;          // the face point of its column (a fixed wall's)
+    Vec<D> face;          // the face point of its column (at rest on a moving wall)
     std::size_t index = 0;
     std::int64_t id = -1;
   };
   void chooseFace(const Dictionary& dict, const Vec<D>& centre);
   void buildTerms(const Dictionary& dict);
   void locate(const FlowState<D>& s);
-  Vec<D> faceOf(const FlowState<D>& s, std::size_t k) const;
+  Vec<D> faceOf(const FlowState<D>& s, const Term& t) const;
   double fluidFaceValue(const FlowState<D>& s, const Term& t, const Vec<D>& face) const;
   std::string faceName() const;
 
@@ -94,7 +94,7 @@ class WallPressure : public SampledFunctionObject<D> {
   Vec<D> centre_ = Vec<D>::Zero();   // on the face
   double size_ = 0, area_ = 0;
   bool disc_ = false;
-  bool fromFluid_ = false;           // faceValue fluid (or auto on a fixed wall)
+  bool fromFluid_ = false;           // faceValue fluid (or auto)
   Vec<D> gravity_ = Vec<D>::Zero();
   std::vector<Term> terms_;
   bool located_ = false;                              // the terms were looked up once

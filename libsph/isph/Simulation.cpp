@@ -70,6 +70,7 @@ void Simulation<D>::buildMovingWalls(std::vector<std::shared_ptr<WallMotion<D>>>
   movingWalls_ = std::make_unique<MovingWalls<D>>(std::move(motions), std::move(names), std::move(boxes));
   movingWalls_->place(s_.particles, s_.time);
   movingWalls_->prescribeVelocity(s_.particles, s_.time);
+  s_.wallPoses = &movingWalls_->poses();
 }
 
 // Every rank has read or generated the whole set: each keeps its own particles and the

@@ -13,6 +13,8 @@
 
 namespace shizuku {
 
+template <int D> struct Pose;
+
 template <int D>
 struct FlowState {
   ParticleSet<D> particles;
@@ -46,6 +48,10 @@ struct FlowState {
   std::vector<Vec<D>> fitNormal;         // fitted outward normal, the detector's where not fitted
   std::vector<double> fitDistance;       // signed distance s_i / d0 (positive outside), NaN where not fitted
   std::vector<double> curvature;         // kappa_i * d0 (eq. 20), NaN where not computed
+
+  // The moving walls' poses at `time`, indexed by WallBox::motion (MovingWalls::poses();
+  // nullptr in a case without moving walls): where a rigid wall's rest points are now.
+  const std::vector<Pose<D>>* wallPoses = nullptr;
 
   // A distributed run's halo (nullptr in a serial run): the particles past numOwned() are
   // ghosts, copies of other ranks' particles (docs/parallel.md 4).

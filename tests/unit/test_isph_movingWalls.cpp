@@ -7,8 +7,9 @@
 //    showing its velocity (U_w = 0) would push on the water; one shown at the wrong time
 //    level would too, as soon as it accelerates (the oscillating case below).
 //  - The same with the tank and its water rising at U: a wall-pressure sensor reading the
-//    fluid (faceValue fluid) on the moving tank equals the fixed tank's, its face point
-//    moving with the wall (the rest position's face point reads rho g U t off).
+//    fluid (faceValue fluid, the default) on the moving tank equals the fixed tank's, its
+//    face point moving with the wall (the rest position's face point reads rho g U t off);
+//    on a turned tank it reads a linear pressure field at the face point the rotation gives.
 //  - A case without a motion builds nothing of it; one with a motion names it, keeps the
 //    rest positions, and its time step respects the wall's speed.
 //  - A restart from latestTime continues a rolling tank bit for bit.
@@ -92,12 +93,52 @@ void sensorsAgree(Simulation<D>& a, Simulation<D>& b) {
     // Round-off, as the pressures above; the rest position's face point is 471 Pa off.
     BOOST_TEST(std::abs(pa - pb) < 1e-9 * 1000 * 9.81 * 0.12);
   }
-  // Without faceValue (auto) the moving tank's sensor reads the wall layers, the fixed one's the fluid.
+  // Without faceValue both read the fluid, the moving tank's as the fixed one's.
   const Dictionary byDefault = Dictionary::fromString("type wallPressure; wall tank; centre " +
                                                       vec<D>(0.3, 0.05, 0.15) + "; size 0.013;", "test");
-  WallPressure<D> fixedAuto("f", byDefault, {tankBox<D>(false)}, g), movingAuto("m", byDefault, {tankBox<D>(true)}, g);
-  BOOST_TEST(fixedAuto.describe().find("face value from the fluid") != std::string::npos);
-  BOOST_TEST(movingAuto.describe().find("face value from the fluid") == std::string::npos);
+  WallPressure<D> fixedDefault("f", byDefault, {tankBox<D>(false)}, g), movingDefault("m", byDefault, {tankBox<D>(true)}, g);
+  BOOST_TEST(fixedDefault.describe().find("face value from the fluid") != std::string::npos);
+  BOOST_TEST(movingDefault.describe().find("face value from the fluid") != std::string::npos);
+  BOOST_TEST(std::abs(movingDefault.pressure(b.state()) - fixedDefault.pressure(a.state())) < 1e-9 * 1000 * 9.81 * 0.12);
+}
+
+// A tank turned by 10 degrees about (0.15, 0) (about z in 3D), its fluid given the pressure
+// p_f = rho0 g . (r_f - x_s): the fluid reading carries it to the face point as the tank
+// holds it now, so a sensor centred at C (on the right wall at rest) reads rho0 g . (x_C - x_s)
+// with x_C = c + R(10 deg)(C - c), whichever rank or layer holds what. The rest face point
+// would read rho0 |g| 0.026 m = 259 Pa off.
+template <int D>
+void sensorOnTurnedTank() {
+  test::TempCase c("mwTurned");
+  const std::string axis = D == 3 ? " axis (0 0 1);" : "";
+  writeCase<D>(c, vec<D>(0, 0, 0), "motion { type rotation; centre " + vec<D>(0.15, 0, 0.15) + ";" + axis +
+                                       " angle \"10\"; }", "endTime 1; deltaT 1e-3;\n");
+  SimulationOptions opt;
+  opt.functionObjects = false;
+  Log::get().quiet = true;
+  Simulation<D> sim(c.dir(), opt);
+  Log::get().quiet = false;
+  sim.analyse();
+  auto& s = sim.state();
+  Vec<D> g = Vec<D>::Zero(), xs = Vec<D>::Zero(), centre = Vec<D>::Zero(), C = Vec<D>::Zero();
+  g[1] = -9.81;
+  xs[1] = 0.2;
+  centre[0] = 0.15;
+  C[0] = 0.3;
+  C[1] = 0.05;
+  if (D == 3) centre[2] = C[2] = 0.15;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    if (s.isFluid(i)) s.particles.pressure[i] = s.rho0 * g.dot(s.particles.position[i] - xs);
+  const double a = 10 * M_PI / 180;
+  Vec<D> xC = centre;
+  xC[0] += std::cos(a) * (C[0] - centre[0]) - std::sin(a) * (C[1] - centre[1]);
+  xC[1] += std::sin(a) * (C[0] - centre[0]) + std::cos(a) * (C[1] - centre[1]);
+  const Dictionary dict = Dictionary::fromString("type wallPressure; wall tank; centre " + vec<D>(0.3, 0.05, 0.15) +
+                                                 "; size 0.013;", "test");
+  WallPressure<D> sensor("turned", dict, {tankBox<D>(true)}, g);
+  const double expected = s.rho0 * g.dot(xC - xs), read = sensor.pressure(s);
+  BOOST_TEST_MESSAGE(D << "D turned tank: sensor " << read << " Pa, expected " << expected << " Pa");
+  BOOST_TEST(std::abs(read - expected) < 1e-9 * expected);
 }
 
 template <int D>
@@ -156,6 +197,9 @@ BOOST_AUTO_TEST_CASE(translating_tank_is_galilean_invariant_2d) { galileanInvari
 BOOST_AUTO_TEST_CASE(translating_tank_is_galilean_invariant_3d) { galileanInvariance<3>(0); }
 BOOST_AUTO_TEST_CASE(rising_tank_is_galilean_invariant_and_its_sensor_moves_with_it_2d) { galileanInvariance<2>(1); }
 BOOST_AUTO_TEST_CASE(rising_tank_is_galilean_invariant_and_its_sensor_moves_with_it_3d) { galileanInvariance<3>(1); }
+
+BOOST_AUTO_TEST_CASE(the_fluid_reading_follows_a_turned_wall_2d) { sensorOnTurnedTank<2>(); }
+BOOST_AUTO_TEST_CASE(the_fluid_reading_follows_a_turned_wall_3d) { sensorOnTurnedTank<3>(); }
 
 BOOST_AUTO_TEST_CASE(a_motion_is_built_only_when_named) {
   test::TempCase bare("mwBare"), rolled("mwRolled");
