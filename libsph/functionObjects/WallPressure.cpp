@@ -247,6 +247,9 @@ void WallPressure<D>::buildTerms(const Dictionary& dict) {
 // the terms are spread over the ranks (id -1: elsewhere).
 template <int D>
 void WallPressure<D>::locate(const FlowState<D>& s) {
+  if (fromFluid_ && wall_.motion >= 0 && !s.wallPoses)
+    throw std::logic_error(cat("wallPressure '", this->name(), "': the moving wall '", wall_.name,
+                               "' has no pose in this state (FlowState::wallPoses)"));
   const auto& P = s.particles;
   const double tol = 1e-6 * wall_.d0;
   const auto& X = P.restPosition.empty() ? P.position : P.restPosition;  // rest: every wall particle's
@@ -300,7 +303,7 @@ double WallPressure<D>::pressure(const FlowState<D>& s) {
 // wall's current pose (the same on every rank, so no other particle is needed).
 template <int D>
 Vec<D> WallPressure<D>::faceOf(const FlowState<D>& s, const Term& t) const {
-  if (wall_.motion < 0 || !s.wallPoses) return t.face;
+  if (wall_.motion < 0) return t.face;
   return (*s.wallPoses)[std::size_t(wall_.motion)].position(t.face);
 }
 

@@ -8,7 +8,7 @@
 //    floor, whose first two layers lie inside it, of sizes not a whole number of spacings;
 //  - every one of those sensors both with `faceValue wallLayers` and with `faceValue fluid`
 //    (the fluid's pressure carried hydrostatically to the face from the first wall layer's
-//    fluid neighbours), and without faceValue a sensor on a fixed wall reads the fluid;
+//    fluid neighbours), and without faceValue a sensor reads the fluid;
 //  - after the particles are reordered the reading is the same;
 //  - a sensor inside one interval between two wall columns reads the linear
 //    interpolation of the columns' face values at its midpoint; the segment weights equal
@@ -124,7 +124,7 @@ void checkHydrostatic(double width, double height, double depth, const std::vect
         BOOST_TEST(std::abs(p - exact) <= kPressureTolerance * kRho * kG * H);
       }
     }
-  // Without faceValue a sensor on a fixed wall reads the fluid (auto).
+  // Without faceValue a sensor reads the fluid (the default).
   BOOST_TEST(sensor<D>(sensors.front().entries, wall)->describe().find("face value from the fluid") != std::string::npos);
   // Reordered particles: the sensor finds its wall particles again, same reading.
   auto w = sensor<D>(sensors.front().entries + " faceValue wallLayers;", wall);
