@@ -84,7 +84,7 @@ template <int D>
 void sensorsAgree(Simulation<D>& a, Simulation<D>& b) {
   Vec<D> g = Vec<D>::Zero();
   g[1] = -9.81;
-  for (const std::string centre : {vec<D>(0.3, 0.05, 0.15), vec<D>(0.15, 0, 0.15)}) {
+  for (const std::string& centre : {vec<D>(0.3, 0.05, 0.15), vec<D>(0.15, 0, 0.15)}) {
     const Dictionary dict = Dictionary::fromString("type wallPressure; wall tank; centre " + centre +
                                                    "; size 0.013; faceValue fluid;", "test");
     WallPressure<D> sa("a", dict, {tankBox<D>(false)}, g), sb("b", dict, {tankBox<D>(true)}, g);
