@@ -34,7 +34,8 @@ const ScalarParameter maxCo = controlDict.scalar("maxCo", dim::none,
 const ScalarParameter maxDeltaT = controlDict.scalar("maxDeltaT", dim::time,
     "largest step with adjustTimeStep").def(1e300).shownDefault("unlimited").min(1e-12);
 const OptionParameter writeControl = controlDict.option("writeControl", {"timeStep", "runTime", "adjustableRunTime"},
-    "write every writeInterval steps, or seconds (adjustableRunTime lands on write times)").def("timeStep");
+    "write every writeInterval steps, or seconds (adjustableRunTime lands on write times in equal steps: "
+    "method.md 4.3)").def("timeStep");
 const ScalarParameter writeInterval = controlDict.scalar("writeInterval", dim::none,
     "steps (timeStep) or seconds between writes").def(100).shownDefault("100 steps; endTime with a run-time writeControl")
     .above(0).max(1e12);

@@ -4,6 +4,8 @@
 // functions { ... } and healthChecks { ... } are read elsewhere.
 // The controlDict is re-read while running (reread()), so editing `stopAt writeNow;` stops a run.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include "core/Dictionary.hpp"
 #include <string>
 
@@ -40,6 +42,25 @@ struct RunControl {
   // finishes with a sliver step, in which the stabilized PPE source term (1/dt^2, eq. 9)
   // is 1e13 times too large.
   static bool landsOn(double dt, double remaining) { return remaining - dt < 1e-6 * dt; }
+
+  // The step towards a write time `remaining` ahead when steps may be at most dt: the time
+  // left divided into the fewest equal steps of at most dt, a step longer than dt by less
+  // than 1e-6 dt counting as dt (landsOn's rule, so no sliver is left over). Landing on a
+  // write time then shortens the steps before it evenly instead of cutting the last one or
+  // two short: a step up to twice shorter than its neighbours made the pressure's part that
+  // scales with 1/dt spike at every write time (docs/method.md 4.3). A running plan (the
+  // previous step, `previous`, still divides the time left evenly) is kept while it exceeds
+  // dt by at most kLandingAllowance: a limit that falls by a few per cent in the last steps
+  // would otherwise halve the last step. Returns dt when remaining or dt is not positive.
+  static constexpr double kLandingAllowance = 0.05;
+  static double evenStepTo(double dt, double remaining, double previous = 0) {
+    if (!(remaining > 0) || !(dt > 0)) return dt;
+    const auto even = [remaining](double limit) {
+      return remaining / std::max(1.0, std::ceil(remaining / limit - 1e-6));
+    };
+    const double strict = even(dt), kept = even((1 + kLandingAllowance) * dt);
+    return kept > strict && std::abs(kept - previous) <= 1e-9 * previous ? kept : strict;
+  }
 
   // Next write time after time t (runTime/adjustableRunTime), from the start time grid.
   double nextWriteTime(double t) const;

@@ -72,11 +72,16 @@ double TimeLoop<D>::chooseDeltaT(double previous, double nextWrite) {
     for (const auto& l : lim)
       if (l.dt < dt) { dt = l.dt; report.dtLimiter = l.name; }
     if (!std::isfinite(dt)) { dt = rc_.deltaT; report.dtLimiter = "deltaT"; }
-    // Land exactly on the next write time.
+    // Land exactly on the next write time in equal steps (docs/method.md 4.3).
     if (rc_.writeControl == RunControl::WriteControl::adjustableRunTime) {
       const double remaining = nextWrite - s_.time;
-      if (remaining > rc_.timeTolerance() && RunControl::landsOn(dt, remaining)) { dt = remaining; report.dtLimiter = "write"; }
-      else if (remaining > dt && remaining < 2 * dt) { dt = 0.5 * remaining; report.dtLimiter = "write"; }
+      const double even = RunControl::evenStepTo(dt, remaining, previous);
+      if (remaining > rc_.timeTolerance()) {
+        // The last two steps before a write are named after it (the time-step floor lets a
+        // landing step be short); earlier ones keep the limit they are a rounding of.
+        if (remaining < 2 * dt) report.dtLimiter = "write";
+        dt = even;
+      }
     }
   }
   const double toEnd = rc_.endTime - s_.time;
