@@ -23,16 +23,25 @@ experiment"): each is printed with its measured value as `issue 18 bound` and no
 What is asserted are the guards the resolution study supports. P1 reads the face value from
 the fluid (`faceValue fluid`, docs/postprocessing.md); measured 2026-12-06 on 2 threads at
 H/30, H/60 and H/120, the H/30 trajectories on 1 and 2 threads with solver tolerance 1e-8 and
-1e-9, H/60 with 1e-8 and 1e-9:
-  - crossing within 6 % of 2.616 (+3.8, +4.1 and +4.3, +2.8 %; read from the wall layers
-    +3.8, +2.8, +2.6 %; the wall row before 2026-12-02 +3.6, +0.4, +4.3 %);
+1e-9, H/60 with 1e-8 and 1e-9 (in brackets: with the steps to each write time made equal,
+the same day, 1 and 2 threads at H/30):
+  - at H/30 only, the crossing (the first sample above 0.3: the impact's first burst at this
+    size) within 6 % of 2.616 (+3.8 %; [+1.9, +1.9 %]);
+  - with --full, the crossingMean (the 0.1 moving average above 0.3) within 5 % of the
+    converged runs' 3.768 (spread 0.020): [H/60 3.769, H/120 3.675]; before the equal
+    steps 3.72-3.73 at H/60 with three wall conditions. At H/60 the first sample above 0.3 is
+    a spike on a slow rise (2.72 before the equal steps, [2.79]) and is not asserted; at H/30
+    the first burst lifts the moving average early ([3.51, 3.51]), which is not asserted
+    either (docs/validation.md, "Steps cut short at write times"). Planted at H/60: p = 0 on
+    the surface particles (`pressureCondition particles`) gives 3.988 (+5.8 %) and fails,
+    where the first sample above 0.3 (2.696, +3.1 %) passed the old 6 % guard;
   - filtered first peak at most 2 rho g H (0.59 on three trajectories, 0.28 and 0.31, 0.28;
     the wall row before 2026-12-02 7.2, 4.2, 6.6);
   - plateau mean within 35 % of 0.538 (-27 to -28 %, -30 and -29 %, -26 %: the water's
     plateau in this discretisation, docs/validation.md, "Which pressure the water feels");
   - plateau noise at most 0.1 rho g H (0.053-0.060 over the three H/30 trajectories, 0.062
-    and 0.057, 0.066; the wall layers' reading 0.077-0.094, the wall row before 2026-12-02
-    0.36, 0.24, 0.30);
+    and 0.057, 0.066; [0.047, 0.046; H/60 0.048, H/120 0.096]; the wall layers' reading
+    0.077-0.094, the wall row before 2026-12-02 0.36, 0.24, 0.30);
   - the impulse balance over the plateau (wallPressureMeasures.py: the water's change of x
     momentum against the end walls' impulse, |dM_x - (I_left - I_far)| / I_far; conservation
     written every step here) at most 0.05: 0.002-0.011, 0.0008 and 0.0001, 0.00006; the same
@@ -48,7 +57,8 @@ asserted against them:
     6, 30, 60 and 160 mm) within 10 % (H/30) or 7 % (--full, H/60) of the mean of the three
     converged runs' plateaus. Measured (2026-12-06): H/30 -2.8, -5.0, -4.9, -0.4 % on one
     thread and -4.1, -7.3, -4.6, -1.5 % on two; H/60 -4.0, -3.5, -2.8, -0.1 %; H/120 -5.2,
-    -3.7, -1.1, +3.1 %; the three converged runs themselves spread by 3.7, 1.8, 1.6 and 2.3 %
+    -3.7, -1.1, +3.1 % [H/30 -3.6, -5.1, -5.1, -2.4 and -3.6, -4.9, -5.1, -1.8 %; H/60 -2.3,
+    -2.7, -2.1, +0.1 %; H/120 -5.0, -4.1, -1.5, +3.7 %]; the three converged runs themselves spread by 3.7, 1.8, 1.6 and 2.3 %
     of their mean. The surface condition on the particles (p = 0 half a spacing too low,
     `pressureCondition particles`) gives -4.0, -7.1, -9.3 and -15.0 % at H/30 and fails;
     P1 read from the wall layers gives +36 % and fails.
@@ -65,6 +75,7 @@ ISSUE_NOISE = 0.02
 GUARD = {"crossing": 0.06, "plateau": 0.35}
 GUARD_PEAK1, GUARD_NOISE = 2.0, 0.10
 GUARD_BALANCE = 0.05
+GUARD_CROSSING_MEAN = 0.05
 GUARD_CONVERGED = {False: 0.10, True: 0.07}
 
 
@@ -86,8 +97,18 @@ def main():
     print(f"issue 18 bound: P1 plateau noise {m['noise']:.4f} rho g H (bound {ISSUE_NOISE}: "
           f"{'met' if m['noise'] <= ISSUE_NOISE else 'not met'})")
     for key, tol in GUARD.items():
+        if key == "crossing" and a.full:
+            continue  # at H/60 the first sample above 0.3 is a spike on a slow rise: crossingMean below
         dev = m[key] / EXPERIMENT[key] - 1
         st.check(abs(dev) <= tol, f"P1 {key} {m[key]:.3f} within {100 * tol:.0f} % of {EXPERIMENT[key]} ({100 * dev:+.1f} %)")
+    conv_crossing, conv_spread = measures.converged_crossing()
+    dev = m["crossingMean"] / conv_crossing - 1
+    text = (f"P1 crossingMean (the 0.1 moving average above 0.3) {m['crossingMean']:.3f} against the converged "
+            f"runs' {conv_crossing:.3f} (spread {conv_spread:.3f}): {100 * dev:+.1f} %")
+    if a.full:
+        st.check(abs(dev) <= GUARD_CROSSING_MEAN, text + f", within {100 * GUARD_CROSSING_MEAN:.0f} %")
+    else:
+        print(text + " (not asserted at H/30: the impact's first burst lifts the mean there)")
     st.check(m["peak1"] <= GUARD_PEAK1, f"P1 first peak (100 Hz low-pass) {m['peak1']:.3f} at most {GUARD_PEAK1} rho g H")
     st.check(m["noise"] <= GUARD_NOISE, f"P1 plateau noise {m['noise']:.4f} at most {GUARD_NOISE} rho g H")
     converged, tol = measures.converged(), GUARD_CONVERGED[bool(a.full)]
