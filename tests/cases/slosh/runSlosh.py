@@ -9,7 +9,9 @@ linear velocity field): the period at the gauge 0.1 m from the left wall, fitted
 first two periods of linear theory, within 2 % of T1 = 2 pi / omega_1, omega_1^2 =
 g (pi/L) tanh(pi h/L) = 1.1818 s (the issue's bound). Resolution study (2D, 2 threads):
 +3.47 % at d0 = 2 cm, +1.03 % at 1 cm, +0.48 % at 5 mm; the 3D thin tank (no-slip front
-and back walls) +2.18 % at 2 cm (8 cm broad), +1.26 % at 1 cm (4 cm broad).
+and back walls) +2.18 % at 2 cm (8 cm broad), +1.26 % at 1 cm (4 cm broad) with the steps cut
+short at each write; with equal steps to each write (2026-12-06) +2.11 % on 2 threads (fails)
+and +1.82 % on one: at the bound (tutorials/slosh/README.md).
   default: 2D at d0 = 1 cm to 2.4 s (about 1 min);
   --full:  2D at 5 mm to 4.2 s, the 3D thin tank at d0 = 1 cm, 4 cm broad, to 2.5 s (22 min
            on one thread), and SPHERIC Test 10 at d0 = 3 mm: the first impact's peak time within 20 ms of the
