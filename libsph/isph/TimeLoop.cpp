@@ -75,12 +75,11 @@ double TimeLoop<D>::chooseDeltaT(double previous, double nextWrite) {
     // Land exactly on the next write time in equal steps (docs/method.md 4.3).
     if (rc_.writeControl == RunControl::WriteControl::adjustableRunTime) {
       const double remaining = nextWrite - s_.time;
-      const double even = RunControl::evenStepTo(dt, remaining, previous);
       if (remaining > rc_.timeTolerance()) {
         // The last two steps before a write are named after it (the time-step floor lets a
         // landing step be short); earlier ones keep the limit they are a rounding of.
         if (remaining < 2 * dt) report.dtLimiter = "write";
-        dt = even;
+        dt = RunControl::evenStepTo(dt, remaining, previous);
       }
     }
   }
