@@ -10,9 +10,9 @@ first two periods of linear theory, within 2 % of T1 = 2 pi / omega_1, omega_1^2
 g (pi/L) tanh(pi h/L) = 1.1818 s (the issue's bound). Measured 2026-12-06 (one thread
 unless two are named): 2D +1.11 % at d0 = 2 cm, +1.03 % at 1 cm, +0.54 % at 5 mm (two);
 the 3D thin tank 8 cm broad (no-slip front and back walls) +0.88 % at 2 cm and +1.07 % /
-+1.45 % (one / two) at 1 cm, eight particles across. 4 cm broad, four across, it gave +1.82
-to +2.11 % with no-slip front and back walls and +1.14 % with slip ones, so the 3D check runs
-the tank 8 cm broad (tutorials/slosh/README.md).
++1.45 % (one / two) at 1 cm, eight particles across. 4 cm broad, four across, five runs gave
++1.14 to +2.11 % (no-slip or slip side walls, or no viscous term), so the 3D check runs the
+tank 8 cm broad (tutorials/slosh/README.md).
   default: 2D at d0 = 1 cm to 2.4 s (about 1 min);
   --full:  2D at 5 mm to 4.2 s, the 3D thin tank at d0 = 1 cm, 8 cm broad, to 2.5 s (15 min
            on one thread), and SPHERIC Test 10 at d0 = 3 mm: the first impact's peak time within 20 ms of the
