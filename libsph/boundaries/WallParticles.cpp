@@ -79,9 +79,16 @@ AdamiRow<D> AdamiRow<D>::compute(const FlowState<D>& s, const WallContacts<D>& c
   }
   if (row.weightSum > 0) {
     const double forcesPart = s.rho0 * sum / row.weightSum;
-    // Eq. 11b: the velocity term may lower the wall to ambient pressure, not below.
+    const double velocityPart = s.rho0 * velocitySum * invDt / row.weightSum;
+    // Eq. 11b: the velocity term may lower the wall to ambient pressure, not below. Where it
+    // would, the row is p_w = 0 itself; the bound's value taken as a right-hand side,
+    // -sum W p^n_f / sum W, gave p_w the change of the fluid's pressure over the step, a lag
+    // that alternated from step to step at small steps (docs/validation.md, "Wall pressure").
+    // Where the forces alone already put the wall at or below ambient (above a waterline),
+    // the velocity term may only raise it.
     const double floor = std::max(0.0, previousPressure / row.weightSum + forcesPart);
-    row.rhs = forcesPart + std::max(s.rho0 * velocitySum * invDt / row.weightSum, -floor);
+    row.ambient = floor > 0 && velocityPart < -floor;
+    row.rhs = row.ambient ? 0.0 : forcesPart + std::max(velocityPart, -floor);
   }
   return row;
 }

@@ -20,8 +20,8 @@
 //    along the wall normal (the velocity-Neumann term stops motion into or out of the wall
 //    in one step and leaves the motion along it alone). A lone particle's forces enter
 //    along n_f only: nothing below it carries its weight beside a vertical wall.
-//    The velocity part may lower the row's right-hand side to ambient pressure, not below
-//    (eq. 11b, with the fluid neighbours' previous pressure as the estimate of sum W p_f):
+//    Where the velocity part would lower the wall below ambient pressure (eq. 11b, with the
+//    fluid neighbours' previous pressure as the estimate of sum W p_f), the row is p_w = 0:
 //    water does not pull on a wall, it separates (a jet leaving a box's top edge).
 //    p_w = 0 without fluid neighbours. Inlet particles take the row with the whole
 //    relative velocity, a_f = (u*_f - U_w)/dt, U_w their prescribed velocity: an inlet
@@ -52,6 +52,7 @@ template <int D>
 struct AdamiRow {
   double weightSum = 0;   // sum_f W_wf over fluid neighbours
   double rhs = 0;         // rho0 sum_f W_wf a_f . r_wf / sum W
+  bool ambient = false;   // eq. 11b binds: the row is p_w = 0, without fluid coefficients
   // Coefficient of fluid neighbour f (pair k of row w): -W_wf / sum W.
   static AdamiRow compute(const FlowState<D>& s, const WallContacts<D>& contacts, std::size_t w);
 };

@@ -171,6 +171,10 @@ std::string AggregationAMG::describe() const {
 }
 
 void AggregationAMG::solved(int iterations) {
+  if (correcting_) {
+    correcting_ = false;
+    return;
+  }
   if (sinceSetup_ == 1) setupIterations_ = iterations;
   else if (iterations > 1.5 * setupIterations_ + 2) stale_ = true;
 }
@@ -185,8 +189,11 @@ double AggregationAMG::operatorComplexity() const {
 bool AggregationAMG::setup(const SparseMatrixR& A) {
   fine_ = &A;
   const int n = int(A.rows());
-  if (stale_ || n != n_ || sinceSetup_ >= reuse_ || levels_.empty()) {
+  if (correcting_ && !stale_ && n == n_ && !levels_.empty()) {
+    // the hierarchy of this step's first solve serves its correction as it is
+  } else if (stale_ || n != n_ || sinceSetup_ >= reuse_ || levels_.empty()) {
     const bool built = build(A);
+    correcting_ = false;  // a rebuilt hierarchy counts its solve as any other
     n_ = n;
     stale_ = !built;  // a failed coarsest factorisation: rebuild at the next setup
     sinceSetup_ = 1;

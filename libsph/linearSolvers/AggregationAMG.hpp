@@ -45,6 +45,7 @@ class AggregationAMG final : public Preconditioner {
   bool nextSetupRebuilds() const override { return stale_ || sinceSetup_ >= reuse_ || levels_.empty(); }
   void rebuildAtNextSetup() override { stale_ = true; }
   void solved(int iterations) override;
+  void nextSetupCorrects() override { correcting_ = true; }
   int levels() const { return int(levels_.size()); }
   long setups() const { return setups_; }
   // Sum of the nonzeros of all levels over those of the finest (last setup).
@@ -70,6 +71,7 @@ class AggregationAMG final : public Preconditioner {
   int reuse_;
   bool stale_ = true;
   int n_ = 0, sinceSetup_ = 0, setupIterations_ = 0;
+  bool correcting_ = false;  // this setup and solve correct the last one (nextSetupCorrects)
   long setups_ = 0;
   const SparseMatrixR* fine_ = nullptr;  // this step's matrix (alive during the solve)
   std::vector<Level> levels_;

@@ -74,6 +74,7 @@ class BiCGSTABSolver final : public LinearSolver {
   }
   bool nextSolveStartsAfresh() const override { return pc_->nextSetupRebuilds(); }
   void startAfreshAtNextSolve() override { pc_->rebuildAtNextSetup(); }
+  void nextSolveCorrectsTheLast() override { pc_->nextSetupCorrects(); }
 
  private:
   // BiCGSTAB can stagnate or break down; a direct LU solves this step rather

@@ -56,6 +56,9 @@ class LinearSolver {
   // rebuild it (the unknowns were renumbered, or a time directory was written).
   virtual bool nextSolveStartsAfresh() const { return true; }
   virtual void startAfreshAtNextSolve() {}
+  // The next solve's matrix is the last one with a few rows changed, in the same step (the
+  // wall rows of eq. 11b decided again): state kept across steps is reused, not aged.
+  virtual void nextSolveCorrectsTheLast() {}
   // Build from the `pressure` sub-dictionary of system/sphSolution (nullptr: defaults).
   static std::unique_ptr<LinearSolver> create(const Dictionary* dict);
   static std::vector<std::string> names();

@@ -38,6 +38,10 @@ class Preconditioner {
   virtual bool nextSetupRebuilds() const { return true; }
   virtual void rebuildAtNextSetup() {}
   virtual void solved(int iterations) {}
+  // The next setup() gets the last matrix with a few rows changed, within the same step:
+  // a preconditioner kept across steps keeps what it built and counts neither the setup nor
+  // the solve towards its rebuild.
+  virtual void nextSetupCorrects() {}
 };
 
 // inv[i] = 1 / A_ii (whenZero where A_ii = 0); false when a diagonal entry is zero or not finite.

@@ -106,6 +106,7 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
   int* col = A_.innerIndexPtr();
   double* val = A_.valuePtr();
   long fallbacks = 0;
+  ambient_.assign(std::size_t(n), 0);
   // Dynamic: a wall row (its Adami weights and contacts) costs several fluid rows, and the
   // walls are not spread evenly over a static split of the particles.
 #pragma omp parallel for schedule(dynamic, 256) reduction(+ : fallbacks)
@@ -156,12 +157,13 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
       if (known != 0) rhs += known;  // outlet neighbours' prescribed pressure
     } else {
       const AdamiRow<D> row = AdamiRow<D>::compute(s, contacts_, i);
+      ambient_[i] = row.ambient;
       for (Index k = nl.begin(i); k < nl.end(i); ++k) {
         const Index j = nl.j[k];
         if (!unknown_[j] || !s.isFluid(j)) continue;
         if (diagPos < 0 && j > i) putDiag();
         col[pos] = int(j);
-        val[pos++] = -s.w(std::size_t(i), k) / row.weightSum;
+        val[pos++] = row.ambient ? 0.0 : -s.w(std::size_t(i), k) / row.weightSum;  // eq. 11b binds: p_w = 0
       }
       diag = 1.0;
       rhs = row.rhs;
@@ -214,7 +216,8 @@ void PressureEquation<D>::fillSurfaceRow(const FlowState<D>& s, long i, Index po
 }
 
 template <int D>
-LinearSolveResult PressureEquation<D>::solve(FlowState<D>& s) {
+LinearSolveResult PressureEquation<D>::solve(FlowState<D>& s, bool correction) {
+  if (correction) solver_->nextSolveCorrectsTheLast();
   auto& p = s.particles.pressure;
   const long n = long(A_.rows());
   x_.resize(n);
@@ -227,6 +230,17 @@ LinearSolveResult PressureEquation<D>::solve(FlowState<D>& s) {
   for (long i = 0; i < n; ++i) p[i] = unknown_[i] ? x_[i] : hasPrescribedPressure(s, i) ? p[i] : 0.0;
   s.exchange(p);
   return res;
+}
+
+template <int D>
+bool PressureEquation<D>::wallBoundsChanged(const FlowState<D>& s) const {
+  const long owned = long(std::min(s.numOwned(), ambient_.size()));
+  long changed = 0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : changed)
+  for (long i = 0; i < owned; ++i)
+    if (unknown_[i] == 1 && !s.isFluid(i) && AdamiRow<D>::compute(s, contacts_, i).ambient != bool(ambient_[i]))
+      ++changed;
+  return Communicator::world().sum(double(changed)) > 0;
 }
 
 // This rank's rows (its own particles, the first numOwned) with global column numbers:

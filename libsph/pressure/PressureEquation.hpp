@@ -41,8 +41,13 @@ class PressureEquation {
   }
   // source[i] = b_i for fluid rows (rho/dt <div u*>_i plus stabilization terms).
   void assemble(const FlowState<D>& s, const std::vector<double>& source);
-  // Solves and writes particles.pressure (p = 0 where not an unknown).
-  LinearSolveResult solve(FlowState<D>& s);
+  // Solves and writes particles.pressure (p = 0 where not an unknown). correction: the
+  // matrix is the last solve's with a few wall rows changed (the solver reuses its state).
+  LinearSolveResult solve(FlowState<D>& s, bool correction = false);
+  // Whether eq. 11b, decided again with the pressure just solved, binds at a wall row where
+  // the assembly's decision (from the previous step's pressure) did not, or the reverse; the
+  // step then assembles and solves again (docs/method.md 11). Collective in a distributed run.
+  bool wallBoundsChanged(const FlowState<D>& s) const;
   // Particles whose pressure is solved for (the other rows are p = 0).
   long numUnknowns() const { return numUnknowns_; }
   const SparseMatrixR& matrix() const { return A_; }
@@ -69,6 +74,7 @@ class PressureEquation {
   std::vector<Index> rowStart_;        // per row: start in the CSR arrays
   std::vector<std::int64_t> ids_;      // particle ids of the last assembly (detects reordering)
   WallContacts<D> contacts_;           // wall normals of fluid particles (wall rows, eq. 11a)
+  std::vector<std::uint8_t> ambient_;  // per wall row of the last assembly: eq. 11b binds, p_w = 0
   bool hasWallRows_ = false;
   SparseMatrixR A_;
   long numUnknowns_ = 0;
