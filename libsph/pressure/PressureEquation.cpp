@@ -21,6 +21,7 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
   }
   pinned_ = !anyDirichlet && numUnknowns_ > 0;
   if (hasWallRows_) contacts_.update(s);  // the wall normals the wall rows use (eq. 11a)
+  ambient_.assign(s.size(), 0);
   fillRows(s, source);
 }
 
@@ -106,9 +107,7 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
   int* col = A_.innerIndexPtr();
   double* val = A_.valuePtr();
   long fallbacks = 0;
-  ambient_.assign(std::size_t(n), 0);
-  // Dynamic: a wall row (its Adami weights and contacts) costs several fluid rows, and the
-  // walls are not spread evenly over a static split of the particles.
+  // Dynamic: a wall row costs several fluid rows, and walls are not spread evenly.
 #pragma omp parallel for schedule(dynamic, 256) reduction(+ : fallbacks)
   for (long i = 0; i < n; ++i) {
     Index pos = rowStart_[i];
@@ -120,7 +119,6 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
     }
     if (unknown_[i] == 2) {
       fillSurfaceRow(s, i, pos, col, val);
-      b_[i] = 0;
       continue;
     }
     Index diagPos = -1;
@@ -189,10 +187,11 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
   }
 }
 
-// Eq. 6b divided by sum_j a_ij d_ij (> 0 by countRows): diagonal 1 + delta sum a / sum a d,
+// Eq. 6b divided by sum_j a_ij d_ij (> 0 by countRows), right-hand side 0: diagonal 1 + delta sum a / sum a d,
 // off-diagonals -delta a_ij / sum a d. Neighbours with a known p (= 0) add only to the sums.
 template <int D>
 void PressureEquation<D>::fillSurfaceRow(const FlowState<D>& s, long i, Index pos, int* col, double* val) {
+  b_[i] = 0;
   const auto& nl = s.neighbours;
   const Vec<D>& inward = inward_[i];
   double sumA = 0, sumAD = 0, d = 0;
