@@ -40,7 +40,8 @@ the same day, 1 and 2 threads at H/30):
   - plateau mean within 35 % of 0.538 (-27 to -28 %, -30 and -29 %, -26 %: the water's
     plateau in this discretisation, docs/validation.md, "Which pressure the water feels");
   - plateau noise at most 0.1 rho g H (0.053-0.060 over the three H/30 trajectories, 0.062
-    and 0.057, 0.066; [0.047, 0.046; H/60 0.048, H/120 0.096]; the wall layers' reading
+    and 0.057, 0.066; [0.047, 0.046; H/60 0.048, H/120 0.096]; with eq. 11b decided with the
+    solved pressure, H/30 0.040-0.042, H/60 0.041-0.051; the wall layers' reading
     0.077-0.094, the wall row before 2026-12-02 0.36, 0.24, 0.30);
   - the impulse balance over the plateau (wallPressureMeasures.py: the water's change of x
     momentum against the end walls' impulse, |dM_x - (I_left - I_far)| / I_far; conservation
