@@ -132,11 +132,10 @@ void IsphStep<D>::solvePressure() {
   }
   StageTimers::Scope t(timers_, st_.ppeSolve);
   report_.ppe = scheme_.ppe->solve(s_);
-  // Eq. 11b decided with the pressure just solved (docs/method.md 11): the rows whose bound
-  // changed are assembled again, at most twice.
-  for (int pass = 0; pass < 2 && report_.ppe.ok && scheme_.ppe->wallBoundsChanged(s_); ++pass) {
+  // Eq. 11b decided with the pressure just solved (docs/method.md 11): where a wall row's
+  // bound changed, the rewritten wall rows are solved again, at most twice.
+  for (int pass = 0; pass < 2 && report_.ppe.ok && scheme_.ppe->redecideWallRows(s_); ++pass) {
     const int iterations = report_.ppe.iterations;
-    scheme_.ppe->assemble(s_, source_);
     report_.ppe = scheme_.ppe->solve(s_, true);
     report_.ppe.iterations += iterations;
   }

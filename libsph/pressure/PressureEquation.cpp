@@ -154,17 +154,8 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
       rhs = -source[i];
       if (known != 0) rhs += known;  // outlet neighbours' prescribed pressure
     } else {
-      const AdamiRow<D> row = AdamiRow<D>::compute(s, contacts_, i);
-      ambient_[i] = row.ambient;
-      for (Index k = nl.begin(i); k < nl.end(i); ++k) {
-        const Index j = nl.j[k];
-        if (!unknown_[j] || !s.isFluid(j)) continue;
-        if (diagPos < 0 && j > i) putDiag();
-        col[pos] = int(j);
-        val[pos++] = row.ambient ? 0.0 : -s.w(std::size_t(i), k) / row.weightSum;  // eq. 11b binds: p_w = 0
-      }
-      diag = 1.0;
-      rhs = row.rhs;
+      fillWallRow(s, i, AdamiRow<D>::compute(s, contacts_, i), col, val);
+      continue;
     }
     if (diagPos < 0) putDiag();
     val[diagPos] = diag;
@@ -231,14 +222,45 @@ LinearSolveResult PressureEquation<D>::solve(FlowState<D>& s, bool correction) {
   return res;
 }
 
+// The Adami row of wall particle i (eqs. 11a, 11b): diagonal 1, -W_wf / sum W for each fluid
+// neighbour (0 where eq. 11b binds: p_w = 0), columns ascending.
 template <int D>
-bool PressureEquation<D>::wallBoundsChanged(const FlowState<D>& s) const {
-  const long owned = long(std::min(s.numOwned(), ambient_.size()));
+void PressureEquation<D>::fillWallRow(const FlowState<D>& s, long i, const AdamiRow<D>& row, int* col, double* val) {
+  const auto& nl = s.neighbours;
+  Index pos = rowStart_[i];
+  bool diagonal = false;
+  for (Index k = nl.begin(i); k < nl.end(i); ++k) {
+    const Index j = nl.j[k];
+    if (!unknown_[j] || !s.isFluid(j)) continue;
+    if (!diagonal && j > i) {
+      col[pos] = int(i);
+      val[pos++] = 1.0;
+      diagonal = true;
+    }
+    col[pos] = int(j);
+    val[pos++] = row.ambient ? 0.0 : -s.w(std::size_t(i), k) / row.weightSum;
+  }
+  if (!diagonal) {
+    col[pos] = int(i);
+    val[pos] = 1.0;
+  }
+  b_[i] = row.rhs;
+  ambient_[i] = row.ambient;
+}
+
+template <int D>
+bool PressureEquation<D>::redecideWallRows(const FlowState<D>& s) {
+  const long n = long(ambient_.size()), owned = long(std::min(s.numOwned(), ambient_.size()));
+  int* col = A_.innerIndexPtr();
+  double* val = A_.valuePtr();
   long changed = 0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(+ : changed)
-  for (long i = 0; i < owned; ++i)
-    if (unknown_[i] == 1 && !s.isFluid(i) && AdamiRow<D>::compute(s, contacts_, i).ambient != bool(ambient_[i]))
-      ++changed;
+  for (long i = 0; i < n; ++i) {
+    if (unknown_[i] != 1 || s.isFluid(i)) continue;
+    const AdamiRow<D> row = AdamiRow<D>::compute(s, contacts_, i);
+    if (i < owned && row.ambient != bool(ambient_[i])) ++changed;
+    fillWallRow(s, i, row, col, val);
+  }
   return Communicator::world().sum(double(changed)) > 0;
 }
 

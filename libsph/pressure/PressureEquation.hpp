@@ -44,10 +44,10 @@ class PressureEquation {
   // Solves and writes particles.pressure (p = 0 where not an unknown). correction: the
   // matrix is the last solve's with a few wall rows changed (the solver reuses its state).
   LinearSolveResult solve(FlowState<D>& s, bool correction = false);
-  // Whether eq. 11b, decided again with the pressure just solved, binds at a wall row where
-  // the assembly's decision (from the previous step's pressure) did not, or the reverse; the
-  // step then assembles and solves again (docs/method.md 11). Collective in a distributed run.
-  bool wallBoundsChanged(const FlowState<D>& s) const;
+  // Eq. 11b decided again with the pressure just solved: rewrites the wall rows and returns
+  // whether any row's bound changed from the last decision (the assembly's takes the previous
+  // step's pressure); the step then solves again (docs/method.md 11). Collective.
+  bool redecideWallRows(const FlowState<D>& s);
   // Particles whose pressure is solved for (the other rows are p = 0).
   long numUnknowns() const { return numUnknowns_; }
   const SparseMatrixR& matrix() const { return A_; }
@@ -65,6 +65,7 @@ class PressureEquation {
   bool countRows(const FlowState<D>& s);
   void fillRows(const FlowState<D>& s, const std::vector<double>& source);
   void fillSurfaceRow(const FlowState<D>& s, long i, Index pos, int* col, double* val);
+  void fillWallRow(const FlowState<D>& s, long i, const AdamiRow<D>& row, int* col, double* val);
   LinearSolveResult solveDistributed(const FlowState<D>& s);
   std::unique_ptr<LinearSolver> solver_;
   bool onSurface_ = true;

@@ -96,8 +96,8 @@ MUTATIONS = [
              "the wall takes the change of the fluid's pressure over the step, below ambient under a block "
              "leaving the floor, and alternating from step to step at small steps"),
     Mutation("wallBoundsDecidedOnce", "libsph/isph/IsphStep.cpp",
-             "  for (int pass = 0; pass < 2 && report_.ppe.ok && scheme_.ppe->wallBoundsChanged(s_); ++pass) {",
-             "  for (int pass = 0; pass < 0 && report_.ppe.ok && scheme_.ppe->wallBoundsChanged(s_); ++pass) {",
+             "  for (int pass = 0; pass < 2 && report_.ppe.ok && scheme_.ppe->redecideWallRows(s_); ++pass) {",
+             "  for (int pass = 0; pass < 0 && report_.ppe.ok && scheme_.ppe->redecideWallRows(s_); ++pass) {",
              [r"^unit\.test_isph_wallSlide$"],
              "eq. 11b is decided only with the previous step's pressure: at an impact's first step the side "
              "walls beside a falling block take ambient pressure and the block is not stopped"),

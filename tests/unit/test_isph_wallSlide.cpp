@@ -65,30 +65,39 @@ void writeBlockCase(test::TempCase& c, int rows, double d0) {
                    vec<D>(width, 2 * rows * d0, width) + "; layers 3; open (top); }\n");
 }
 
-// The largest fluid speed after one step of kDt: {over the particles farther than the
-// support 2.4 d0 from every side wall, over all}.
-template <int D>
-std::pair<double, double> blockSpeedsAfterOneStep(int rows, double d0) {
+// What `measure` returns for the simulation of the block case (rows deep, spacing d0),
+// without function objects.
+template <int D, class Measure>
+auto onBlock(int rows, double d0, Measure measure) {
   test::TempCase c("wallBlock");
   writeBlockCase<D>(c, rows, d0);
   SimulationOptions opt;
   opt.functionObjects = false;
   Simulation<D> sim(c.dir(), opt);
-  sim.analyse();
-  sim.step(kDt);
-  const auto& s = sim.state();
-  const double width = 10 * d0, margin = 2.4 * d0;
-  double middle = 0, all = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (!s.isFluid(i)) continue;
-    const Vec<D>& r = s.particles.position[i];
-    bool away = r.x() > margin && r.x() < width - margin;
-    if (D == 3) away = away && r[D - 1] > margin && r[D - 1] < width - margin;
-    const double speed = s.particles.velocity[i].norm();
-    all = std::max(all, speed);
-    if (away) middle = std::max(middle, speed);
-  }
-  return {middle, all};
+  return measure(sim);
+}
+
+// The largest fluid speed after one step of kDt: {over the particles farther than the
+// support 2.4 d0 from every side wall, over all}.
+template <int D>
+std::pair<double, double> blockSpeedsAfterOneStep(int rows, double d0) {
+  return onBlock<D>(rows, d0, [&](Simulation<D>& sim) {
+    sim.analyse();
+    sim.step(kDt);
+    const auto& s = sim.state();
+    const double width = 10 * d0, margin = 2.4 * d0;
+    double middle = 0, all = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (!s.isFluid(i)) continue;
+      const Vec<D>& r = s.particles.position[i];
+      bool away = r.x() > margin && r.x() < width - margin;
+      if (D == 3) away = away && r[D - 1] > margin && r[D - 1] < width - margin;
+      const double speed = s.particles.velocity[i].norm();
+      all = std::max(all, speed);
+      if (away) middle = std::max(middle, speed);
+    }
+    return std::pair<double, double>{middle, all};
+  });
 }
 
 // A block at rest on the floor for one step (hydrostatic pressure), then thrown up as a
@@ -96,31 +105,30 @@ std::pair<double, double> blockSpeedsAfterOneStep(int rows, double d0) {
 // fluid particle's velocity from free flight, (0, 1 - g dt)}.
 template <int D>
 std::pair<double, double> blockThrownUpFromTheFloor(int rows, double d0) {
-  test::TempCase c("wallLeave");
-  writeBlockCase<D>(c, rows, d0);
-  SimulationOptions opt;
-  opt.functionObjects = false;
-  Simulation<D> sim(c.dir(), opt);
-  auto& s = sim.state();
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (s.isFluid(i)) s.particles.velocity[i] = Vec<D>::Zero();
-  sim.analyse();
-  sim.step(kDt);
-  sim.analyse();
-  Vec<D> up = Vec<D>::Zero();
-  up.y() = 1.0;
-  for (std::size_t i = 0; i < s.size(); ++i)
-    if (s.isFluid(i)) s.particles.velocity[i] = up;
-  sim.step(kDt);
-  Vec<D> flight = up;
-  flight.y() -= kG * kDt;
-  double lowestFloor = 0, departure = 0;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (s.isFluid(i)) departure = std::max(departure, (s.particles.velocity[i] - flight).norm());
-    else if (s.particles.isWall(i) && s.particles.position[i].y() < 0)
-      lowestFloor = std::min(lowestFloor, s.particles.pressure[i]);
-  }
-  return {lowestFloor, departure};
+  return onBlock<D>(rows, d0, [](Simulation<D>& sim) {
+    auto& s = sim.state();
+    auto setFluidVelocity = [&](const Vec<D>& u) {
+      for (std::size_t i = 0; i < s.size(); ++i)
+        if (s.isFluid(i)) s.particles.velocity[i] = u;
+    };
+    setFluidVelocity(Vec<D>::Zero());
+    sim.analyse();
+    sim.step(kDt);
+    sim.analyse();
+    Vec<D> up = Vec<D>::Zero();
+    up.y() = 1.0;
+    setFluidVelocity(up);
+    sim.step(kDt);
+    Vec<D> flight = up;
+    flight.y() -= kG * kDt;
+    double lowestFloor = 0, departure = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (s.isFluid(i)) departure = std::max(departure, (s.particles.velocity[i] - flight).norm());
+      else if (s.particles.isWall(i) && s.particles.position[i].y() < 0)
+        lowestFloor = std::min(lowestFloor, s.particles.pressure[i]);
+    }
+    return std::pair<double, double>{lowestFloor, departure};
+  });
 }
 
 template <int D>
