@@ -13,17 +13,7 @@ const char* faceLabel(int face) {
 
 template <int D>
 LeakDetector<D>::LeakDetector(std::vector<WallBox<D>> walls) : walls_(std::move(walls)) {
-  for (std::size_t w = 0; w < walls_.size(); ++w) {
-    WallBox<D>& b = walls_[w];
-    if (!b.solid || b.body) continue;
-    for (int f = 0; f < 2 * D; ++f) {
-      const int k = f / 2;
-      Vec<D> outside = 0.5 * (b.min + b.max);
-      outside[k] = f % 2 ? b.max[k] + 0.5 * b.d0 : b.min[k] - 0.5 * b.d0;
-      for (std::size_t o = 0; o < walls_.size() && !b.covered[std::size_t(f)]; ++o)
-        if (o != w) b.covered[std::size_t(f)] = walls_[o].inLayers(outside, 0.0);
-    }
-  }
+  markCoveredFaces(walls_);
 }
 
 // Whether the segment from -> to passes through the layers of closed face `face`: one end

@@ -36,11 +36,15 @@ void MovingWalls<D>::place(ParticleSet<D>& P, double t) {
   before_ = placed_ ? now_ : scratch_;
   now_ = scratch_;
   placed_ = true;
+  const bool normals = !P.restNormal.empty();
   const long n = long(P.size());
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     const int m = P.motion[std::size_t(i)];
-    if (m != 0) P.position[i] = now_[std::size_t(m - 1)].position(P.restPosition[i]);
+    if (m == 0) continue;
+    const Pose<D>& pose = now_[std::size_t(m - 1)];
+    P.position[i] = pose.position(P.restPosition[i]);
+    if (normals) P.wallNormal[i] = pose.R * P.restNormal[i];
   }
 }
 

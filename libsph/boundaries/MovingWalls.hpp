@@ -3,8 +3,9 @@
 // without one builds nothing of this (no field, no loop, no pipeline line).
 //   - place(t):             every moving wall particle to x = R(t) X + b(t), X its rest
 //                           position (the particle field `restPosition`, which restarts read
-//                           back, so a restart continues the motion exactly); the poses at t
-//                           kept for the leak test.
+//                           back, so a restart continues the motion exactly), its wall normal
+//                           turned with it (`wallNormal` = R(t) `restNormal`, WallNormals.hpp);
+//                           the poses at t kept for the leak test.
 //   - prescribeVelocity(t): the velocities U = R'(t) X + b'(t), set at the start of a step to
 //                           their value at its end, t^{n+1}: the wall row's velocity term
 //                           (eq. 11a) then drives the fluid's normal velocity to the wall's at

@@ -30,6 +30,26 @@ void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u, bool ou
 }
 
 template <int D>
+Vec<D> seenWallNormal(const FlowState<D>& s, std::size_t f) {
+  const auto& nl = s.neighbours;
+  const auto& P = s.particles;
+  Vec<D> centre = Vec<D>::Zero();
+  for (Index k = nl.begin(f); k < nl.end(f); ++k)
+    if (P.isWall(std::size_t(nl.j[k]))) centre += s.w(f, k) * nl.rij(f, k);
+  Vec<D> sum = Vec<D>::Zero();
+  if (!P.wallNormal.empty())
+    for (Index k = nl.begin(f); k < nl.end(f); ++k) {
+      const std::size_t w = std::size_t(nl.j[k]);
+      if (!P.isWall(w)) continue;
+      const Vec<D>& n = P.wallNormal[w];
+      sum += (n.dot(centre) >= 0 ? s.w(f, k) : -s.w(f, k)) * n;
+    }
+  const Vec<D>& dir = sum.norm() > 0 ? sum : centre;
+  const double len = dir.norm();
+  return len > 0 ? Vec<D>(dir / len) : Vec<D>::Zero();
+}
+
+template <int D>
 void WallContacts<D>::update(const FlowState<D>& s) {
   const auto& nl = s.neighbours;
   const long n = long(s.size());
@@ -38,15 +58,12 @@ void WallContacts<D>::update(const FlowState<D>& s) {
 #pragma omp parallel for schedule(static)
   for (long f = 0; f < n; ++f) {
     if (!s.isFluid(std::size_t(f))) continue;
-    Vec<D> sum = Vec<D>::Zero();
     bool alone = true;
-    for (Index k = nl.begin(f); k < nl.end(f); ++k) {
+    for (Index k = nl.begin(f); k < nl.end(f) && alone; ++k) {
       const Index j = nl.j[k];
-      if (s.particles.isWall(std::size_t(j))) sum += s.w(std::size_t(f), k) * nl.rij(std::size_t(f), k);
-      else if (s.isFluid(std::size_t(j)) && j != f) alone = false;
+      alone = !(s.isFluid(std::size_t(j)) && j != f);
     }
-    const double len = sum.norm();
-    normal[f] = len > 0 ? Vec<D>(sum / len) : Vec<D>::Zero();
+    normal[f] = seenWallNormal(s, std::size_t(f));
     lone[f] = alone;
   }
   s.exchange(normal);  // a wall row reads its fluid neighbours' contacts
@@ -105,6 +122,8 @@ void velocityGradientWithShepardWalls(FlowState<D>& s, std::vector<Mat<D>>& out)
 
 template void velocityGradientWithShepardWalls<2>(FlowState<2>&, std::vector<Mat<2>>&);
 template void velocityGradientWithShepardWalls<3>(FlowState<3>&, std::vector<Mat<3>>&);
+template Vec<2> seenWallNormal<2>(const FlowState<2>&, std::size_t);
+template Vec<3> seenWallNormal<3>(const FlowState<3>&, std::size_t);
 template void shepardFluidVelocity<2>(const FlowState<2>&, std::vector<Vec<2>>&, bool);
 template void shepardFluidVelocity<3>(const FlowState<3>&, std::vector<Vec<3>>&, bool);
 template struct WallContacts<2>;

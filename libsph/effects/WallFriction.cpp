@@ -3,8 +3,8 @@
 // first row of water along every wall, as the wall functions of finite-volume codes supply
 // the wall's stress at the first cell. For a fluid particle f whose nearest wall particle is
 // closer than 1.5 d0 (the first row):
-//   n_f = sum_w W_fw r_fw / |sum_w W_fw r_fw|   (the wall normal f sees, into the fluid: that
-//                                                of the wall rows, eq. 11a, WallContacts)
+//   n_f                                         (the wall normal f sees, into the fluid: that
+//                                                of the wall rows, eq. 11c, seenWallNormal)
 //   y_f = n_f . r_fw* - d0/2                    (distance from the wall face, at least d0/4;
 //                                                w* the nearest wall particle)
 //   u_t = (u_f - U_w*) - n_f (n_f . (u_f - U_w*)) (velocity along the wall)
@@ -17,6 +17,7 @@
 // error): the law of the wall includes the viscous sublayer's stress.
 // Reads (constant/physicalProperties): wallFriction { roughness [m]; }; needs nu > 0.
 #include "effects/WallFriction.hpp"
+#include "boundaries/WallParticles.hpp"
 #include "core/Parameter.hpp"
 #include "effects/EffectFactories.hpp"
 #include "effects/PhysicalProperties.hpp"
@@ -68,21 +69,19 @@ class WallFriction final : public ForceEffect<D> {
 #pragma omp parallel for schedule(static) reduction(+ : acted)
     for (long f = 0; f < n; ++f) {
       if (!s.isFluid(std::size_t(f))) continue;
-      Vec<D> sum = Vec<D>::Zero();
       double nearest = HUGE_VAL;
       Index nearestPair = -1;
       for (Index k = nl.begin(f); k < nl.end(f); ++k) {
         if (!P.isWall(std::size_t(nl.j[k]))) continue;
-        const Vec<D> r = nl.rij(std::size_t(f), k);
-        const double dist = r.norm();
-        sum += s.kernel.w(dist) * r;
+        const double dist = nl.r(std::size_t(f), k);
         if (dist < nearest) {
           nearest = dist;
           nearestPair = k;
         }
       }
-      if (!(nearest < 1.5 * d0) || sum.squaredNorm() == 0) continue;
-      const Vec<D> normal = sum.normalized();
+      if (!(nearest < 1.5 * d0)) continue;
+      const Vec<D> normal = seenWallNormal(s, std::size_t(f));
+      if (normal.squaredNorm() == 0) continue;
       const double y = std::max(normal.dot(nl.rij(std::size_t(f), nearestPair)) - 0.5 * d0, 0.25 * d0);
       const Vec<D> rel = P.velocity[f] - P.velocity[nl.j[nearestPair]];
       const Vec<D> along = rel - normal * normal.dot(rel);

@@ -1,5 +1,6 @@
 // The set-up of a simulation from its case directory: see CaseSetup.hpp.
 #include "isph/CaseSetup.hpp"
+#include "boundaries/WallNormals.hpp"
 #include "core/Parameter.hpp"
 #include "decomposition/DistributedTimeDirectory.hpp"
 #include "effects/PhysicalProperties.hpp"
@@ -106,6 +107,7 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
   GeneratedParticles<D> gen = generateParticles<D>(files.particlesDict);
   s.periodic = gen.periodic;
   walls = gen.walls;
+  markCoveredFaces(walls);
   openRegions = gen.openBoundaries;
   motions = gen.motions;
   s.hasOpenBoundaries = !openRegions.empty();
@@ -148,6 +150,8 @@ std::string CaseSetup<D>::readInitialState(const CaseFiles& files, const RunCont
                          startName + "' first: " + why);
   }
   if (!startName.empty()) checkMotionFields(files, startName, s.particles, motions.size());
+  // From the regions' geometry, on a restart too (at rest; the moving walls turn them).
+  assignWallNormals(s.particles, walls);
   if (std::abs(s.particles.spacing - s.d0) > 1e-12 * s.d0)
     files.particlesDict.error("spacing", cat("differs from the spacing of the saved particles (",
                                             s.particles.spacing, " m)"));

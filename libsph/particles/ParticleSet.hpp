@@ -26,6 +26,8 @@ struct ParticleSet {
   std::vector<Vec<D>> shift;        // last particle shift delta r (m)
   std::vector<Vec<D>> restPosition; // wall particles of a case with moving walls: where particlesDict built them (m)
   std::vector<std::uint8_t> motion; // moving wall particles: their motion's index + 1 (0: fixed)
+  std::vector<Vec<D>> wallNormal;   // wall particles: their wall surface's unit normal, out of the wall (WallNormals.hpp)
+  std::vector<Vec<D>> restNormal;   // wall particles of a case with moving walls: wallNormal at the rest position
 
   double mass = 0;        // particle mass (kg, or kg/m in 2D), calibrated on the initial lattice
   double rho0 = 1000;     // reference density
@@ -44,7 +46,8 @@ struct ParticleSet {
   template <class F> void forEachField(F&& f) {
     f("U", velocity); f("p", pressure); f("rhoN", density); f("type", type);
     f("surface", surface); f("id", id); f("normal", normal); f("shift", shift);
-    f("restPosition", restPosition); f("motion", motion);
+    f("restPosition", restPosition); f("motion", motion); f("wallNormal", wallNormal);
+    f("restNormal", restNormal);
   }
   template <class F> void forEachField(F&& f) const {
     const_cast<ParticleSet*>(this)->forEachField(

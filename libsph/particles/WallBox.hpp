@@ -1,6 +1,8 @@
 // A wall region as the generator built it (particlesDict `type wall;`: a box, or a curved
 // or STL solid), kept for the pieces that need the solid's geometry after set-up: the
-// domain (its default bounds) and the leak detector (the layer region and the closed faces).
+// domain (its default bounds), the leak detector (the layer region and the closed faces) and
+// the wall normals (layerDepth: which wall holds a wall particle; outwardNormal: its wall
+// surface's normal there, docs/method.md 11, eq. 11c).
 //   min, max:            the wall surface (inner faces), m
 //   layers, d0:          rows of wall particles outside the surface, spacing
 //   open[2k], open[2k+1]: faces -x_k, +x_k without layers (left right bottom top front back)
@@ -17,16 +19,18 @@
 //                        builds it
 //   covered:             a solid box's faces that lie against another wall (an obstacle's
 //                        bottom on the tank's floor): fluid cannot reach the box through
-//                        them, so depth inside the box is measured from its other faces
-//                        (set by LeakDetector)
+//                        them, so depth inside the box is measured from its other faces,
+//                        and its normals point through those (set by markCoveredFaces)
 // Reads no dictionary keys.
 #pragma once
 #include "core/types.hpp"
 #include "particles/SolidShape.hpp"
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace shizuku {
 
@@ -76,6 +80,65 @@ struct WallBox {
     return false;
   }
 
+  // How far x lies behind the wall's surface when it is in the wall's layer region (a
+  // particle of this wall), else infinity: a container's distance to the surface box, a solid
+  // box's to its nearest uncovered face, a body's -phi. Which wall a particle belongs to.
+  double layerDepth(const Vec<D>& x) const {
+    const double slack = 1e-6 * d0;
+    if (body) {
+      for (int k = 0; k < D; ++k)
+        if (x[k] < min[k] - slack || x[k] > max[k] + slack) return INFINITY;
+      const double p = body->phi(x);
+      return p <= slack ? std::max(0.0, -p) : INFINITY;
+    }
+    if (solid) {
+      double depth = INFINITY;
+      for (int f = 0; f < 2 * D; ++f) {
+        const int k = f / 2;
+        const double d = f % 2 ? max[k] - x[k] : x[k] - min[k];
+        if (d < -slack) return INFINITY;
+        if (!covered[f]) depth = std::min(depth, std::max(0.0, d));
+      }
+      return depth;
+    }
+    double d2 = 0;
+    for (int k = 0; k < D; ++k) {
+      if (x[k] < outerMin[k] - slack || x[k] > outerMax[k] + slack) return INFINITY;
+      const double g = std::max({min[k] - x[k], x[k] - max[k], 0.0});
+      d2 += g * g;
+    }
+    return d2 > 0 ? std::sqrt(d2) : INFINITY;
+  }
+
+  // The unit normal of the wall's surface seen from x in its layer region, pointing out of the
+  // wall (into the fluid's side; docs/method.md 11, eq. 11c): a container's toward the nearest
+  // point of its surface box (a face normal behind a face, diagonal behind an edge or corner);
+  // a solid box's through its nearest uncovered face (faces tied for nearest summed); a body's
+  // grad phi (central differences). Zero where it has none.
+  Vec<D> outwardNormal(const Vec<D>& x) const {
+    Vec<D> n = Vec<D>::Zero();
+    if (body) {
+      const double e = 1e-3 * d0;
+      for (int k = 0; k < D; ++k) {
+        Vec<D> a = x, b = x;
+        a[k] += e;
+        b[k] -= e;
+        n[k] = body->phi(a) - body->phi(b);
+      }
+    } else if (solid) {
+      const double depth = layerDepth(x), tie = 1e-6 * d0;
+      for (int f = 0; f < 2 * D && std::isfinite(depth); ++f) {
+        const int k = f / 2;
+        const double d = f % 2 ? max[k] - x[k] : x[k] - min[k];
+        if (!covered[f] && d <= depth + tie) n[k] += f % 2 ? 1.0 : -1.0;
+      }
+    } else {
+      for (int k = 0; k < D; ++k) n[k] = std::clamp(x[k], min[k], max[k]) - x[k];
+    }
+    const double len = n.norm();
+    return len > 0 ? Vec<D>(n / len) : Vec<D>::Zero();
+  }
+
   // The face a particle in the layers came through: a container's closed face it lies
   // beyond, a solid's uncovered face nearest to it (0..2D-1: -x +x -y +y -z +z; -1: none), a
   // body's surface (kBodySurface).
@@ -95,5 +158,23 @@ struct WallBox {
     return face;
   }
 };
+
+// Marks each solid box's faces that lie against another wall region (`covered`: the point
+// d0/2 outside the face's centre is in that wall's layers, as an obstacle's bottom on a
+// tank's floor). Idempotent.
+template <int D>
+void markCoveredFaces(std::vector<WallBox<D>>& walls) {
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    WallBox<D>& b = walls[w];
+    if (!b.solid || b.body) continue;
+    for (int f = 0; f < 2 * D; ++f) {
+      const int k = f / 2;
+      Vec<D> outside = 0.5 * (b.min + b.max);
+      outside[k] = f % 2 ? b.max[k] + 0.5 * b.d0 : b.min[k] - 0.5 * b.d0;
+      for (std::size_t o = 0; o < walls.size() && !b.covered[std::size_t(f)]; ++o)
+        if (o != w) b.covered[std::size_t(f)] = walls[o].inLayers(outside, 0.0);
+    }
+  }
+}
 
 }  // namespace shizuku

@@ -101,6 +101,19 @@ MUTATIONS = [
              [r"^unit\.test_isph_wallSlide$"],
              "eq. 11b is decided only with the previous step's pressure: at an impact's first step the side "
              "walls beside a falling block take ambient pressure and the block is not stopped"),
+    Mutation("wallNormalFromCentre", "libsph/boundaries/WallParticles.cpp",
+             "  const Vec<D>& dir = sum.norm() > 0 ? sum : centre;",
+             "  const Vec<D>& dir = centre;",
+             [r"^unit\.test_isph_slidingLayer$"],
+             "the wall normal a fluid particle sees is the direction to its wall neighbours' weighted centre "
+             "(eq. 11c dropped): it tilts as water slides past the wall's lattice, and the wall row's velocity "
+             "term turns the sliding into a pressure oscillating at U/d0"),
+    Mutation("wallNormalsNotTurned", "libsph/boundaries/MovingWalls.cpp",
+             "    if (normals) P.wallNormal[i] = pose.R * P.restNormal[i];",
+             "    if (false) P.wallNormal[i] = pose.R * P.restNormal[i];",
+             [r"^unit\.test_boundaries_wallNormals$"],
+             "a moving wall's normals stay at their rest direction: a rolled tank's walls push the water along "
+             "the wrong normal"),
     Mutation("outletKeepsBackflow", "libsph/boundaries/OpenBoundaries.cpp",
              "      } else if (regions_[r].pastFace(P.position[i]) < -0.5 * d0_) {\n",
              "      } else if (false) {\n",
