@@ -18,9 +18,13 @@ Asserted, the guards of the resolution study (2026-12-05; signed mean +11.6, +13
 a/20, a/40, a/80 on 2 threads, +11.3 to +13.5 % on one): the signed mean within that range
 widened on each side by 1.5 points (the a/20 to a/80 change), +9.8 to +15 %, at every size; with
 --full, a/40 and a/80 within 3 points of each other. Each size is run a second time with
-`wallFriction { roughness 0; }` (docs/method.md 11.2): the same guard, and the front held back
-by 0.3 to 3 points (measured 1.0, 1.0 and 0.6 at a/20, a/40, a/80: the smooth bed's stress
-acts where the tongue is fast; a sign error in the stress would push the front ahead).
+`wallFriction { roughness 0; }` (docs/method.md 11.2): the same guard, and with --full the front
+held back by 0.3 to 3 points (measured 1.0, 1.0 and 0.6 at a/20, a/40, a/80: the smooth bed's
+stress acts where the tongue is fast; a sign error in the stress would push the front ahead).
+Since the wall normal of eq. 11c (2026-12-06) the a/20 hold-back is -0.1 points and a planted
+sign error in the stress gives -0.2: at a/20 the first row is 1 cm thick and the stress, spread
+over it, moves the front less than the tongue tip's scatter, so it is printed there, not
+asserted (a/40 on one thread: 2.9 points).
 Planted (a/20): gravity 10 % too strong (g = -10.79 m/s^2) gives +15.3 % and fails. Counting
 every fluid particle as the front (connectedOnly no) gives +13.4 % and passes, as it should: a
 droplet sliding ahead is a choice of measure, not an error of the method.
@@ -66,10 +70,14 @@ def main():
                   f"{100 * sgn:+.1f} % (bound {100 * BOUND:.0f} %: {'met' if mean <= BOUND else 'not met'})")
             st.check(GUARD[0] <= sgn <= GUARD[1], f"{label}: signed mean error {100 * sgn:+.1f} % within "
                      f"[{100 * GUARD[0]:+.1f}, {100 * GUARD[1]:+.1f}] % (the resolution study's guard)")
-        # The bed's stress can only hold the front back.
-        slower = FRICTION_GAIN[0] <= signed[name] - signed[name + "-wallFriction"] <= FRICTION_GAIN[1]
-        st.check(slower, f"{name}: wallFriction holds the front back by {100 * (signed[name] - signed[name + '-wallFriction']):.1f} "
-                 f"points (within {100 * FRICTION_GAIN[0]:.1f}-{100 * FRICTION_GAIN[1]:.1f})")
+        # The bed's stress can only hold the front back; at a/20 by less than the tip's scatter.
+        held = signed[name] - signed[name + "-wallFriction"]
+        text = (f"{name}: wallFriction holds the front back by {100 * held:.1f} points (within "
+                f"{100 * FRICTION_GAIN[0]:.1f}-{100 * FRICTION_GAIN[1]:.1f})")
+        if a.full:
+            st.check(FRICTION_GAIN[0] <= held <= FRICTION_GAIN[1], text)
+        else:
+            print(text + ": not asserted at a/20, where a planted sign error gives the same")
     if a.full:
         finer = abs(signed["a80"]) <= abs(signed["a40"])
         print(f"issue 18 bound: a/80 no worse than a/40: {'met' if finer else 'not met'}")

@@ -17,6 +17,9 @@ one) it reads postProcessing/P1/0/wallPressure.dat (raw column `p`, filtered col
   peak2      largest filtered p* for 5.5 <= t* <= 6.5, and its t*
   noise      rms of raw p* about its centred moving average over a window of 0.1 in t*,
              over the plateau 3.5 <= t* <= 5.5 (unfiltered)
+  noiseRobust   the same deviations' median absolute deviation times 1.4826 (the rms of
+             normal noise): the background without the few one-step spikes of an
+             incompressible merge (an air gap closing beside the sensor), which set the rms
   interiorNoise  the same noise of the `interior` probe, inside the water 0.12 m from the
              wall and 8 cm up (nan without it)
   balance    the horizontal impulse balance over the plateau (nan without the `farWall`
@@ -95,9 +98,11 @@ def measures(t, p, pf, noise=True):
         out["peak2"] = out["peak2_t"] = float("nan")
     if noise:
         avg = moving_average(t, p, WINDOW)
-        out["noise"] = float(np.sqrt(np.mean((p[m] - avg[m]) ** 2)))
+        dev = p[m] - avg[m]
+        out["noise"] = float(np.sqrt(np.mean(dev ** 2)))
+        out["noiseRobust"] = float(1.4826 * np.median(np.abs(dev - np.median(dev))))
     else:
-        out["noise"] = float("nan")
+        out["noise"] = out["noiseRobust"] = float("nan")
     return out
 
 

@@ -43,6 +43,13 @@ the same day, 1 and 2 threads at H/30):
     and 0.057, 0.066; [0.047, 0.046; H/60 0.048, H/120 0.096]; with eq. 11b decided with the
     solved pressure, H/30 0.040-0.042, H/60 0.041-0.051; the wall layers' reading
     0.077-0.094, the wall row before 2026-12-02 0.36, 0.24, 0.30);
+  - with --full, the plateau's robust noise (noiseRobust: 1.4826 times the median absolute
+    deviation about the same moving average, the background without the few one-step spikes
+    of an air gap closing beside the sensor) at most 0.03 rho g H: 0.018 and 0.019 on 2 and 1
+    threads with the wall normal of eq. 11c (2026-12-06; their rms noise 0.022 and 0.039, set
+    by those spikes); 0.045 (rms 0.050) with the wall normal taken toward the wall particles'
+    weighted centre, which tilts as the water runs up past the wall's lattice
+    (docs/validation.md, "The wall normal the wall row sees");
   - the impulse balance over the plateau (wallPressureMeasures.py: the water's change of x
     momentum against the end walls' impulse, |dM_x - (I_left - I_far)| / I_far; conservation
     written every step here) at most 0.05: 0.002-0.011, 0.0008 and 0.0001, 0.00006; the same
@@ -75,6 +82,7 @@ ISSUE_BOUND = {"crossing": 0.03, "peak1": 0.20, "plateau": 0.10, "peak2": 0.20}
 ISSUE_NOISE = 0.02
 GUARD = {"crossing": 0.06, "plateau": 0.35}
 GUARD_PEAK1, GUARD_NOISE = 2.0, 0.10
+GUARD_NOISE_ROBUST_FULL = 0.03
 GUARD_BALANCE = 0.05
 GUARD_CROSSING_MEAN = 0.05
 GUARD_CONVERGED = {False: 0.10, True: 0.07}
@@ -112,6 +120,11 @@ def main():
         print(text + " (not asserted at H/30: the impact's first burst lifts the mean there)")
     st.check(m["peak1"] <= GUARD_PEAK1, f"P1 first peak (100 Hz low-pass) {m['peak1']:.3f} at most {GUARD_PEAK1} rho g H")
     st.check(m["noise"] <= GUARD_NOISE, f"P1 plateau noise {m['noise']:.4f} at most {GUARD_NOISE} rho g H")
+    robust = f"P1 plateau robust noise {m['noiseRobust']:.4f} rho g H"
+    if a.full:
+        st.check(m["noiseRobust"] <= GUARD_NOISE_ROBUST_FULL, robust + f" at most {GUARD_NOISE_ROBUST_FULL}")
+    else:
+        print(robust + " (asserted at full size only)")
     converged, tol = measures.converged(), GUARD_CONVERGED[bool(a.full)]
     reached = measures.heights(case)
     for name, y in measures.HEIGHTS:
