@@ -1,4 +1,4 @@
-// The wall surface's normal at every wall particle (docs/method.md 11, eq. 11c), from the
+// The wall surface's normal at every wall particle (docs/method.md 11, eq. 11d), from the
 // geometry of the wall region the particle belongs to (WallBox.hpp: the region whose layer
 // region holds it, the one it lies least deep in when several do, the tied ones' normals
 // summed where regions meet at an edge of the wall), taken at its rest

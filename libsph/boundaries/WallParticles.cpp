@@ -34,8 +34,13 @@ Vec<D> seenWallNormal(const FlowState<D>& s, std::size_t f) {
   const auto& nl = s.neighbours;
   const auto& P = s.particles;
   Vec<D> centre = Vec<D>::Zero();
+  bool walls = false;
   for (Index k = nl.begin(f); k < nl.end(f); ++k)
-    if (P.isWall(std::size_t(nl.j[k]))) centre += s.w(f, k) * nl.rij(f, k);
+    if (P.isWall(std::size_t(nl.j[k]))) {
+      centre += s.w(f, k) * nl.rij(f, k);
+      walls = true;
+    }
+  if (!walls) return Vec<D>::Zero();
   Vec<D> sum = Vec<D>::Zero();
   if (!P.wallNormal.empty())
     for (Index k = nl.begin(f); k < nl.end(f); ++k) {

@@ -8,10 +8,10 @@
 //  - velocityGradientWithShepardWalls: <grad u> of the fluid's velocity with the walls
 //    showing its Shepard average (the Taylor correction's gradient, docs/method.md 13, and the
 //    midpoint position update's, 4.1 eq. 7b).
-//  - WallContacts: per fluid particle, the wall normal it sees (docs/method.md 11, eq. 11c),
+//  - WallContacts: per fluid particle, the wall normal it sees (docs/method.md 11, eq. 11d),
 //    seenWallNormal (wall particles only, not inlet or outlet buffers; zero without any),
 //    and whether it is lone (no other fluid particle within its support).
-//  - AdamiRow: the implicit wall-pressure row (docs/method.md 11, eqs. 11a, 11b):
+//  - AdamiRow: the implicit wall-pressure row (docs/method.md 11, eqs. 11a, 11b, 11d):
 //      p_w - sum_f (W_wf / sum W) p_f = rho0 sum_f W_wf a_f . r_wf / sum_f W_wf,
 //      a_f = F_f + n_f (n_f . (u^n_f - U_w)) / dt,     F_f = (u*_f - u^n_f) / dt,
 //    r_wf = r_w - r_f, F_f the forces of the predictor per unit mass. The forces enter
@@ -40,9 +40,9 @@ void shepardFluidVelocity(const FlowState<D>& s, std::vector<Vec<D>>& u, bool ou
 template <int D>
 void velocityGradientWithShepardWalls(FlowState<D>& s, std::vector<Mat<D>>& out);
 
-// The wall normal fluid particle f sees (eq. 11c): its wall neighbours' surface normals
+// The wall normal fluid particle f sees (eq. 11d): its wall neighbours' surface normals
 // (`wallNormal`), each turned to agree with the direction from the walls to f,
-// c_f = sum_w W_fw r_fw (a box's normals point into the box, and water may meet a hollow
+// c_f = sum_w W_fw r_fw (a container's normals point into it, and water may meet a hollow
 // box's layers from outside), W-weighted and normalised; c_f / |c_f| where the case has no
 // wall normals or they cancel; zero without wall neighbours.
 template <int D>

@@ -4,7 +4,7 @@
 // the wall's stress at the first cell. For a fluid particle f whose nearest wall particle is
 // closer than 1.5 d0 (the first row):
 //   n_f                                         (the wall normal f sees, into the fluid: that
-//                                                of the wall rows, eq. 11c, seenWallNormal)
+//                                                of the wall rows, eq. 11d, seenWallNormal)
 //   y_f = n_f . r_fw* - d0/2                    (distance from the wall face, at least d0/4;
 //                                                w* the nearest wall particle)
 //   u_t = (u_f - U_w*) - n_f (n_f . (u_f - U_w*)) (velocity along the wall)

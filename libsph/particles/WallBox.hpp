@@ -2,7 +2,7 @@
 // or STL solid), kept for the pieces that need the solid's geometry after set-up: the
 // domain (its default bounds), the leak detector (the layer region and the closed faces) and
 // the wall normals (layerDepth: which wall holds a wall particle; outwardNormal: its wall
-// surface's normal there, docs/method.md 11, eq. 11c).
+// surface's normal there, docs/method.md 11, eq. 11d).
 //   min, max:            the wall surface (inner faces), m
 //   layers, d0:          rows of wall particles outside the surface, spacing
 //   open[2k], open[2k+1]: faces -x_k, +x_k without layers (left right bottom top front back)
@@ -111,7 +111,7 @@ struct WallBox {
   }
 
   // The unit normal of the wall's surface seen from x in its layer region, pointing out of the
-  // wall (into the fluid's side; docs/method.md 11, eq. 11c): a container's toward the nearest
+  // wall (into the fluid's side; docs/method.md 11, eq. 11d): a container's toward the nearest
   // point of its surface box (a face normal behind a face, diagonal behind an edge or corner);
   // a solid box's through its nearest uncovered face (faces tied for nearest summed); a body's
   // grad phi (central differences). Zero where it has none.

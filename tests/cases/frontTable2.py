@@ -21,7 +21,7 @@ widened on each side by 1.5 points (the a/20 to a/80 change), +9.8 to +15 %, at 
 `wallFriction { roughness 0; }` (docs/method.md 11.2): the same guard, and with --full the front
 held back by 0.3 to 3 points (measured 1.0, 1.0 and 0.6 at a/20, a/40, a/80: the smooth bed's
 stress acts where the tongue is fast; a sign error in the stress would push the front ahead).
-Since the wall normal of eq. 11c (2026-12-06) the a/20 hold-back is -0.1 points and a planted
+Since the wall normal of eq. 11d (2026-12-06) the a/20 hold-back is -0.1 points and a planted
 sign error in the stress gives -0.2: at a/20 the first row is 1 cm thick and the stress, spread
 over it, moves the front less than the tongue tip's scatter, so it is printed there, not
 asserted (a/40 on one thread: 2.9 points).

@@ -106,7 +106,7 @@ MUTATIONS = [
              "  const Vec<D>& dir = centre;",
              [r"^unit\.test_isph_slidingLayer$"],
              "the wall normal a fluid particle sees is the direction to its wall neighbours' weighted centre "
-             "(eq. 11c dropped): it tilts as water slides past the wall's lattice, and the wall row's velocity "
+             "(eq. 11d dropped): it tilts as water slides past the wall's lattice, and the wall row's velocity "
              "term turns the sliding into a pressure oscillating at U/d0"),
     Mutation("wallNormalsNotTurned", "libsph/boundaries/MovingWalls.cpp",
              "    if (normals) P.wallNormal[i] = pose.R * P.restNormal[i];",

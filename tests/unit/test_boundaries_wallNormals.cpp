@@ -1,5 +1,5 @@
 // The wall particles' surface normals from their regions' geometry (boundaries/WallNormals,
-// docs/method.md 11, eq. 11c), in 2D and 3D: behind a container's face the face's inward
+// docs/method.md 11, eq. 11d), in 2D and 3D: behind a container's face the face's inward
 // normal, behind its edges and corners the unit diagonal toward the surface box; inside a
 // solid box the outward normal of its nearest face (the sum of the tied faces' normals on
 // its diagonals), a face lying on the floor excepted; in a ball's layers the radial direction; every wall particle has one, no

@@ -7,7 +7,7 @@
 // each fluid particle passed a wall particle, the term read U sin(tilt) / dt as flow into the
 // floor, and the floor's pressure oscillated at U / d0 by 0.18, 0.53 and 1.4 rho g H at 1, 2
 // and 3 m/s (d0 = H/10, dt = 1 ms; docs/validation.md, "Wall pressure"), the source of most
-// of the Buchner sensor's noise at H/60. With n_f from the walls' geometric normals (eq. 11c)
+// of the Buchner sensor's noise at H/60. With n_f from the walls' geometric normals (eq. 11d)
 // it is hydrostatic to the solver's tolerance, in 2D and 3D.
 #define BOOST_TEST_MODULE isph_slidingLayer
 #include <boost/test/unit_test.hpp>

@@ -45,8 +45,8 @@ the same day, 1 and 2 threads at H/30):
     0.077-0.094, the wall row before 2026-12-02 0.36, 0.24, 0.30);
   - with --full, the plateau's robust noise (noiseRobust: 1.4826 times the median absolute
     deviation about the same moving average, the background without the few one-step spikes
-    of an air gap closing beside the sensor) at most 0.03 rho g H: 0.018 and 0.019 on 2 and 1
-    threads with the wall normal of eq. 11c (2026-12-06; their rms noise 0.022 and 0.039, set
+    of an air gap closing beside the sensor) at most 0.03 rho g H: 0.014 and 0.018 on 2 threads,
+    0.019 on 1, with the wall normal of eq. 11d (2026-12-06; their rms noise 0.025, 0.022, 0.039, set
     by those spikes); 0.045 (rms 0.050) with the wall normal taken toward the wall particles'
     weighted centre, which tilts as the water runs up past the wall's lattice
     (docs/validation.md, "The wall normal the wall row sees");
