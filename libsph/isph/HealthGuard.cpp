@@ -193,6 +193,9 @@ void HealthGuard<D>::saveGoodState(const FlowState<D>& s) {
     goodRest_.assign(P.restPosition.begin(), P.restPosition.begin() + n);
     goodMotion_.assign(P.motion.begin(), P.motion.begin() + n);
   }
+  // The wall normals travel with their particles too (WallNormals.hpp).
+  if (!P.wallNormal.empty()) goodWallNormal_.assign(P.wallNormal.begin(), P.wallNormal.begin() + n);
+  if (!P.restNormal.empty()) goodRestNormal_.assign(P.restNormal.begin(), P.restNormal.begin() + n);
   goodBalance_ = s.balance;
   goodTime_ = s.time;
   goodStep_ = s.step;
@@ -212,6 +215,8 @@ void HealthGuard<D>::restoreGoodState(FlowState<D>& s) const {
     P.restPosition = goodRest_;
     P.motion = goodMotion_;
   }
+  if (!P.wallNormal.empty()) P.wallNormal = goodWallNormal_;
+  if (!P.restNormal.empty()) P.restNormal = goodRestNormal_;
   s.refreshTypeMasks();
   s.balance = goodBalance_;
   s.time = goodTime_;

@@ -63,6 +63,8 @@ class HealthGuard {
   std::vector<std::uint8_t> goodType_;
   std::vector<Vec<D>> goodRest_;          // moving walls: rest positions (empty without)
   std::vector<std::uint8_t> goodMotion_;
+  std::vector<Vec<D>> goodWallNormal_;    // the walls' normals (empty without walls)
+  std::vector<Vec<D>> goodRestNormal_;    // moving walls: their rest normals (empty without)
   double goodTime_ = 0, goodDt_ = 0;
   FluidBalance goodBalance_;
   long goodStep_ = 0;
