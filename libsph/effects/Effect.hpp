@@ -1,6 +1,7 @@
 // An optional physical or numerical effect of the step, typed by what it does:
 //   ForceEffect              adds an acceleration to the predictor (gravity, viscosity; eq. 4)
-//   PressureSourceEffect     adds a term to the PPE source (stabilized ISPH; eq. 9)
+//   PressureSourceEffect     adds a term to the PPE source, and may add one to its rows'
+//                            diagonal (stabilized ISPH, eq. 9; compressibility, eq. 6c)
 //   AdvectionVelocityEffect  adds a velocity to the advection of eq. 7 (XSPH)
 //   PositionCorrectionEffect moves particles after advection (ADS)
 //   ShiftTerm                contributes to the particle shift (OPS/DPS, volume, surface fit),
@@ -90,6 +91,9 @@ template <int D>
 struct PressureSourceEffect : EffectAt<D, EffectStage::pressureSource> {
   using EffectAt<D, EffectStage::pressureSource>::EffectAt;
   virtual void addPressureSource(const FlowState<D>&, std::vector<double>& rhsPerParticle) = 0;
+  // A term k p_i the effect adds to the left-hand side of every interior and vicinity row
+  // (1/m^2, the units of the Laplacian's weights; 0: none).
+  virtual double rowDiagonal(const FlowState<D>&) const { return 0; }
 };
 template <int D>
 struct AdvectionVelocityEffect : EffectAt<D, EffectStage::advection> {

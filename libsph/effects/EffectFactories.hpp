@@ -10,6 +10,7 @@ template <int D> std::unique_ptr<Effect<D>> makeGravity(const Dictionary& dict, 
 template <int D> std::unique_ptr<Effect<D>> makeDampingZone(const Dictionary& dict, const FlowState<D>& s);
 template <int D> std::unique_ptr<Effect<D>> makeViscosity(const Dictionary& dict, const FlowState<D>& s);
 template <int D> std::unique_ptr<Effect<D>> makeWallFriction(const Dictionary& dict, const FlowState<D>& s);
+template <int D> std::unique_ptr<Effect<D>> makeCompressibility(const Dictionary& dict, const FlowState<D>& s);
 template <int D> std::unique_ptr<Effect<D>> makePressureStabilization(const Dictionary& dict, const FlowState<D>& s);
 template <int D> std::unique_ptr<Effect<D>> makeXSPH(const Dictionary& dict, const FlowState<D>& s);
 template <int D> std::unique_ptr<Effect<D>> makeADS(const Dictionary& dict, const FlowState<D>& s);

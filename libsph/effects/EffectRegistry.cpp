@@ -48,6 +48,7 @@ void registerBuiltinEffects(EffectRegistry<D>& r) {
   r.add("viscosity", makeViscosity<D>);
   r.add("wallFriction", makeWallFriction<D>);
   r.add("dampingZone", makeDampingZone<D>);
+  r.add("compressibility", makeCompressibility<D>);
   r.add("pressureStabilization", makePressureStabilization<D>);
   r.add("xsph", makeXSPH<D>);
   r.add("ads", makeADS<D>);

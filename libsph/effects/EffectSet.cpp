@@ -26,6 +26,8 @@ EffectSet<D> EffectSet<D>::build(const Dictionary* gravity, const Dictionary& pr
   else props.markRead("wallCondition");
   if (props.subDictPtr("wallFriction")) adopt(reg.create("wallFriction", props, s), set.forces, props, "wallFriction");
   if (const Dictionary* d = sch.subDictPtr("dampingZone")) adopt(reg.create("dampingZone", *d, s), set.forces, sch, "dampingZone");
+  if (props.found("soundSpeed"))
+    adopt(reg.create("compressibility", props, s), set.pressureSources, props, "soundSpeed");
   if (const Dictionary* d = sch.subDictPtr("pressureStabilization"))
     adopt(reg.create("pressureStabilization", *d, s), set.pressureSources, sch, "pressureStabilization");
   if (const Dictionary* d = sch.subDictPtr("xsph")) adopt(reg.create("xsph", *d, s), set.advectionVelocities, sch, "xsph");

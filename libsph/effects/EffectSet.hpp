@@ -3,7 +3,8 @@
 // position corrections (9) and the particle shifting (10, null without shifting).
 // Built from the case dictionaries: an effect the case does not name is not constructed.
 // Reads: constant/g (gravity); constant/physicalProperties nu, wallCondition (viscosity,
-// when nu > 0); system/sphSchemes pressureStabilization, xsph, ads, shifting.
+// when nu > 0), wallFriction, soundSpeed (compressibility); system/sphSchemes dampingZone,
+// pressureStabilization, xsph, ads, shifting.
 #pragma once
 #include "effects/ParticleShifting.hpp"
 

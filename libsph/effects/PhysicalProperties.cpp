@@ -6,13 +6,17 @@ namespace shizuku {
 
 namespace {
 namespace key {
-const ParameterGroup properties("constant/physicalProperties", "The fluid's density and viscosity.");
+const ParameterGroup properties("constant/physicalProperties", "The fluid's density, viscosity and (optional) sound speed.");
 // A density below 1e-3 kg/m^3 (far below any liquid, or a gas at ordinary pressure) makes
 // every pressure (p ~ rho g H) and the PPE's right-hand side so small that the run goes on
 // with p = 0 (docs/reliability.md).
 const ScalarParameter rho = properties.scalar("rho", dim::density, "density").required().above(0).saneMin(1e-3);
 const ScalarParameter nu = properties.scalar("nu", dim::kinematicViscosity, "kinematic viscosity (0: no viscous term is built)")
     .def(0).min(0);
+// Absent: the water is incompressible (eq. 6). Present: the pressure equation's implicit
+// compressibility term, eq. 6c (docs/method.md 4.1).
+const ScalarParameter soundSpeed = properties.scalar("soundSpeed", dim::velocity,
+    "sound speed of the pressure equation's compressibility term, eq. 6c (absent: incompressible)").above(0);
 const OptionParameter wallCondition = properties.option("wallCondition", {"noSlip", "slip"},
     "what the walls show the viscous term: the no-slip mirror velocity or free slip (slip, and only slip, with wallFriction)").def("noSlip");
 const ParameterGroup gravity("constant/g", "Gravity (file absent: no body force is built).");
@@ -37,6 +41,8 @@ PhysicalProperties readPhysicalProperties(const Dictionary& d) {
   }
   return p;
 }
+
+double readSoundSpeed(const Dictionary& d) { return key::soundSpeed.read(d); }
 
 template <int D>
 Vec<D> readGravity(const Dictionary& g) {

@@ -2,7 +2,7 @@
 // the set-up (rho, nu, g), the viscosity effect (nu, wallCondition), the wall friction (nu) and
 // the gravity effect (g). With wallFriction { } the walls show the viscous term free slip.
 // Reads: constant/physicalProperties rho (kg/m^3, required), nu (m^2/s, 0: no viscous term),
-//        wallCondition noSlip|slip; constant/g value (m/s^2, required when the file exists).
+//        wallCondition noSlip|slip, soundSpeed (m/s, read by the compressibility effect); constant/g value (m/s^2, required when the file exists).
 #pragma once
 #include "core/Dictionary.hpp"
 #include "operators/Ops.hpp"
@@ -16,6 +16,8 @@ struct PhysicalProperties {
 };
 
 PhysicalProperties readPhysicalProperties(const Dictionary& physicalProperties);
+// soundSpeed (m/s), when the case names it (the compressibility effect, eq. 6c).
+double readSoundSpeed(const Dictionary& physicalProperties);
 template <int D> Vec<D> readGravity(const Dictionary& g);
 
 }  // namespace shizuku

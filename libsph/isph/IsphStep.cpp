@@ -127,8 +127,12 @@ void IsphStep<D>::solvePressure() {
   {
     StageTimers::Scope t(timers_, st_.ppeAssembly);
     Ops<D>::divergence(s_.neighbours, s_.weights, s_.rho0 / s_.dt * s_.V(), s_.uStar, source_, &s_.isFluidMask);
-    for (auto& e : effects_.pressureSources) e->addPressureSource(s_, source_);
-    scheme_.ppe->assemble(s_, source_);
+    double diagonal = 0;
+    for (auto& e : effects_.pressureSources) {
+      e->addPressureSource(s_, source_);
+      diagonal += e->rowDiagonal(s_);
+    }
+    scheme_.ppe->assemble(s_, source_, diagonal);
   }
   StageTimers::Scope t(timers_, st_.ppeSolve);
   report_.ppe = scheme_.ppe->solve(s_);

@@ -9,7 +9,7 @@
 namespace shizuku {
 
 template <int D>
-void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<double>& source) {
+void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<double>& source, double diagonal) {
   const bool anyDirichlet = countRows(s);
   // The particle order changed (cell reordering): a preconditioner kept from an
   // earlier step no longer matches the rows.
@@ -19,10 +19,11 @@ void PressureEquation<D>::assemble(const FlowState<D>& s, const std::vector<doub
     ids_.assign(P.id.begin(), P.id.begin() + long(owned));
     solver_->startAfreshAtNextSolve();
   }
-  pinned_ = !anyDirichlet && numUnknowns_ > 0;
+  // The compressibility term (diagonal > 0) fixes the level itself: nothing is pinned.
+  pinned_ = !anyDirichlet && numUnknowns_ > 0 && diagonal == 0;
   if (hasWallRows_) contacts_.update(s);  // the wall normals the wall rows use (eq. 11a)
   ambient_.assign(s.size(), 0);
-  fillRows(s, source);
+  fillRows(s, source, diagonal);
 }
 
 // Which particles are unknowns (fluid not on the free surface; free-surface particles with
@@ -96,7 +97,7 @@ bool PressureEquation<D>::countRows(const FlowState<D>& s) {
 // The compressed rows (columns ascending: each neighbour row is sorted by j). Storage
 // grows with 25 % headroom, so the changing number of pairs does not reallocate every step.
 template <int D>
-void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<double>& source) {
+void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<double>& source, double diagonal) {
   const auto& nl = s.neighbours;
   const long n = long(s.size());
   const double V = s.V();
@@ -122,7 +123,7 @@ void PressureEquation<D>::fillRows(const FlowState<D>& s, const std::vector<doub
       continue;
     }
     Index diagPos = -1;
-    double diag = 0, rhs = 0, known = 0;
+    double diag = diagonal, rhs = 0, known = 0;
     auto putDiag = [&]() { diagPos = pos; col[pos] = int(i); val[pos++] = 0; };
     if (s.isFluid(i)) {
       // -sum_j V L_ij (p_j - p_i) = -b_i. A row whose weights break the M-matrix

@@ -1,13 +1,14 @@
 // The pressure Poisson equation of the projection step (eqs 5-6/9, docs/method.md 4.2):
-//   interior and vicinity fluid rows:  -<lap p>_i = -b_i   (SPH(2) Laplacian weights, sign flipped so
-//                                      the diagonal is positive)
+//   interior and vicinity fluid rows:  -<lap p>_i (+ k p_i) = -b_i   (SPH(2) Laplacian weights, sign
+//                                      flipped so the diagonal is positive; k: eq. 6c)
 //   free-surface particles: p = 0 on the surface, delta_i outside the particle: the
 //                           extrapolation row of eq. 6b (FreeSurfaceRow.hpp); with
 //                           freeSurface { pressureCondition particles; } p = 0 on the particle
 //   splash particles (and free ones without a normal or a deeper neighbour): p = 0
 //   outlet particles: their prescribed pressure (Dirichlet, docs/boundaries.md)
 //   wall particles with fluid neighbours: the Adami row (docs/method.md 11 A)
-//   no Dirichlet particle at all (closed or fully periodic domain): one row pinned to p = 0.
+//   no Dirichlet particle at all (closed or fully periodic domain): one row pinned to p = 0,
+//   unless the rows carry the compressibility term (eq. 6c), which fixes the level.
 // Every particle has a row, in particle order, so the numbering of the system
 // only changes when the particles are reordered (a solver may then keep a
 // preconditioner across steps); particles with p = 0 (free surface, splash,
@@ -39,8 +40,9 @@ class PressureEquation {
   bool nextSolveStartsAfresh(const FlowState<D>& s) const {
     return solver_->nextSolveStartsAfresh() || numberingChanged(s.particles, s.numOwned());
   }
-  // source[i] = b_i for fluid rows (rho/dt <div u*>_i plus stabilization terms).
-  void assemble(const FlowState<D>& s, const std::vector<double>& source);
+  // source[i] = b_i for fluid rows (rho/dt <div u*>_i plus the effects' terms); diagonal: the
+  // effects' k added to every fluid row's diagonal (-<lap p>_i + k p_i = -b_i; eq. 6c).
+  void assemble(const FlowState<D>& s, const std::vector<double>& source, double diagonal = 0);
   // Solves and writes particles.pressure (p = 0 where not an unknown). correction: the
   // matrix is the last solve's with a few wall rows changed (the solver reuses its state).
   LinearSolveResult solve(FlowState<D>& s, bool correction = false);
@@ -63,7 +65,7 @@ class PressureEquation {
     return ids_.size() != owned || owned > P.id.size() || !std::equal(ids_.begin(), ids_.end(), P.id.begin());
   }
   bool countRows(const FlowState<D>& s);
-  void fillRows(const FlowState<D>& s, const std::vector<double>& source);
+  void fillRows(const FlowState<D>& s, const std::vector<double>& source, double diagonal);
   void fillSurfaceRow(const FlowState<D>& s, long i, Index pos, int* col, double* val);
   void fillWallRow(const FlowState<D>& s, long i, const AdamiRow<D>& row, int* col, double* val);
   LinearSolveResult solveDistributed(const FlowState<D>& s);
