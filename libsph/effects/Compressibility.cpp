@@ -3,7 +3,8 @@
 // implicitly over the step adds -(p_i - p^n_i)/(c dt)^2 to every interior and vicinity row,
 //   <lap p^{n+1}>_i - (p^{n+1}_i - p^n_i)/(c dt)^2 = (rho0/dt) <div u*>_i,
 // so a pressure disturbance spreads at the sound speed c instead of within one step. It
-// vanishes on a steady pressure (still water stays exact) and sets no time-step limit.
+// vanishes on a steady pressure and sets no time-step limit; a fresh start takes its first
+// p^n from the water at rest (IsphStep::initialPressure), so still water stays exact.
 // Reads: constant/physicalProperties soundSpeed (m/s; absent: incompressible, nothing built).
 #include "effects/EffectFactories.hpp"
 #include "effects/PhysicalProperties.hpp"

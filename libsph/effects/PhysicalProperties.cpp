@@ -16,7 +16,7 @@ const ScalarParameter nu = properties.scalar("nu", dim::kinematicViscosity, "kin
 // Absent: the water is incompressible (eq. 6). Present: the pressure equation's implicit
 // compressibility term, eq. 6c (docs/method.md 4.1).
 const ScalarParameter soundSpeed = properties.scalar("soundSpeed", dim::velocity,
-    "sound speed of the pressure equation's compressibility term, eq. 6c (absent: incompressible)").above(0);
+    "sound speed of the pressure equation's compressibility term, eq. 6c").shownDefault("absent: incompressible").above(0);
 const OptionParameter wallCondition = properties.option("wallCondition", {"noSlip", "slip"},
     "what the walls show the viscous term: the no-slip mirror velocity or free slip (slip, and only slip, with wallFriction)").def("noSlip");
 const ParameterGroup gravity("constant/g", "Gravity (file absent: no body force is built).");

@@ -123,15 +123,38 @@ void IsphStep<D>::predict() {
 }
 
 template <int D>
-void IsphStep<D>::solvePressure() {
+bool IsphStep<D>::compressible() const {
+  for (const auto& e : effects_.pressureSources)
+    if (e->rowDiagonal(s_) > 0) return true;
+  return false;
+}
+
+// The compressibility term (eq. 6c) needs a last pressure p^n; at a fresh start it is the
+// pressure that holds the water against its body forces: the incompressible solve with every
+// velocity set to zero (docs/method.md 4.1). From p^n = 0 a column at rest would ring as a
+// quarter-wave resonator; a moving initial state keeps its own velocities for the first step,
+// so water that starts against a wall meets it at the sound speed.
+template <int D>
+void IsphStep<D>::initialPressure() {
+  auto& u = s_.particles.velocity;
+  std::vector<Vec<D>> kept = u;  // once, before the first step
+  for (auto& v : u) v.setZero();
+  predict();
+  solvePressure(false);
+  u = std::move(kept);
+}
+
+template <int D>
+void IsphStep<D>::solvePressure(bool effectTerms) {
   {
     StageTimers::Scope t(timers_, st_.ppeAssembly);
     Ops<D>::divergence(s_.neighbours, s_.weights, s_.rho0 / s_.dt * s_.V(), s_.uStar, source_, &s_.isFluidMask);
     double diagonal = 0;
-    for (auto& e : effects_.pressureSources) {
-      e->addPressureSource(s_, source_);
-      diagonal += e->rowDiagonal(s_);
-    }
+    if (effectTerms)
+      for (auto& e : effects_.pressureSources) {
+        e->addPressureSource(s_, source_);
+        diagonal += e->rowDiagonal(s_);
+      }
     scheme_.ppe->assemble(s_, source_, diagonal);
   }
   StageTimers::Scope t(timers_, st_.ppeSolve);
@@ -214,6 +237,7 @@ void IsphStep<D>::advance(double dt) {
   if (effects_.shifting) effects_.shifting->beginStep(dt * report_.maxSpeed / s_.h);
   // A moving wall shows the fluid its velocity at the step's end (docs/method.md 11.1).
   if (movingWalls_) movingWalls_->prescribeVelocity(s_.particles, s_.time + dt);
+  if (s_.step == 0 && compressible()) initialPressure();
   predict();
   solvePressure();
   correct();

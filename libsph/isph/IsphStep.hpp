@@ -106,7 +106,10 @@ class IsphStep {
 
  private:
   void predict();
-  void solvePressure();
+  // effectTerms false: eq. 6 alone, without the effects' source and diagonal terms.
+  void solvePressure(bool effectTerms = true);
+  bool compressible() const;  // an effect adds a diagonal term (eq. 6c)
+  void initialPressure();
   void correct();
   void advect();
   void correctPositions();

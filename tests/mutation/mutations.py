@@ -120,6 +120,12 @@ MUTATIONS = [
              [r"^unit\.test_isph_compressibility$", r"^unit\.test_isph_waterHammer$"],
              "the compressibility term keeps k p on the diagonal but drops the last step's pressure from the "
              "source: the pressure is pulled to zero every step and a sound wave dies within a few steps"),
+    Mutation("compressibleStartFromZero", "libsph/isph/IsphStep.cpp",
+             "  if (s_.step == 0 && compressible()) initialPressure();",
+             "  if (false) initialPressure();",
+             [r"^unit\.test_isph_compressibility$"],
+             "a fresh compressible start takes p^n = 0 instead of the pressure of the water at rest: a still "
+             "tank rings as a quarter-wave resonator"),
     Mutation("outletKeepsBackflow", "libsph/boundaries/OpenBoundaries.cpp",
              "      } else if (regions_[r].pastFace(P.position[i]) < -0.5 * d0_) {\n",
              "      } else if (false) {\n",
