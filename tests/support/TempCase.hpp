@@ -10,6 +10,12 @@
 
 namespace shizuku::test {
 
+// A D-dimensional vector as a dictionary entry, "(a b)" or "(a b c)": c is dropped in 2D.
+template <int D>
+std::string vec(double a, double b, double c) {
+  return "(" + std::to_string(a) + " " + std::to_string(b) + (D == 3 ? " " + std::to_string(c) : "") + ")";
+}
+
 class TempCase {
  public:
   explicit TempCase(const std::string& tag) {

@@ -7,23 +7,20 @@
 #define BOOST_TEST_MODULE boundaries_wallNormals
 #include <boost/test/unit_test.hpp>
 
+#include "../support/TempCase.hpp"
 #include "boundaries/MovingWalls.hpp"
 #include "boundaries/WallNormals.hpp"
 #include "particles/ParticleGenerator.hpp"
 #include <cmath>
 
 using namespace shizuku;
+using test::vec;
 
 namespace {
 
 template <int D>
 GeneratedParticles<D> generate(const std::string& text) {
   return generateParticles<D>(Dictionary::fromString(text, "case/system/particlesDict"));
-}
-
-template <int D>
-std::string vec(double a, double b, double c) {
-  return "(" + std::to_string(a) + " " + std::to_string(b) + (D == 3 ? " " + std::to_string(c) : "") + ")";
 }
 
 // The unit vector toward the box [lo, hi] from x outside it (zero inside).

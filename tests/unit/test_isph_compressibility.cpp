@@ -17,17 +17,13 @@
 #include <cmath>
 
 using namespace shizuku;
+using test::vec;
 
 namespace {
 constexpr double kL = 1.0, kC = 1.0, kA = 0.2, kU = 1e-6, kRho = 1000;
 const double kK = 2 * M_PI / kL;
 const double kDt = kA / (kC * kK);
 constexpr int kSteps = 32;  // one turn: 32 atan(0.2) = 6.32
-
-template <int D>
-std::string vec(double a, double b, double z) {
-  return "(" + std::to_string(a) + " " + std::to_string(b) + (D == 3 ? " " + std::to_string(z) : "") + ")";
-}
 
 // A box n spacings long and 6 across (periodic in every direction), filled with water.
 template <int D>

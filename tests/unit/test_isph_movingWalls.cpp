@@ -25,6 +25,7 @@
 #include <iterator>
 
 using namespace shizuku;
+using test::vec;
 
 namespace {
 
@@ -32,11 +33,6 @@ const char* kSchemes =
     "derivatives SPH2;\n"
     "shifting { distribution { type OPS; } volumeCorrection { C 0.1; } surfaceFitting { C 1e-4; } maxShift 0.1; }\n"
     "ads { } xsph { epsilon 0.5; }\n";
-
-template <int D>
-std::string vec(double x, double y, double z) {
-  return "(" + std::to_string(x) + " " + std::to_string(y) + (D == 3 ? " " + std::to_string(z) : "") + ")";
-}
 
 // A tank 0.3 m wide (and deep in 3D), water 0.12 m deep, d0 = 0.02 m, the water moving
 // at `u` and the tank with `motion` (empty: fixed).

@@ -15,16 +15,12 @@
 #include "isph/Simulation.hpp"
 
 using namespace shizuku;
+using test::vec;
 
 namespace {
 constexpr double kG = 9.81, kDt = 1e-3, kD0 = 0.02, kSpeed = 2.0;
 constexpr int kRows = 10;       // H = 10 d0
 constexpr int kSteps = 60;      // U t = 6 d0: every offset of the two lattices, six times
-
-template <int D>
-std::string vec(double a, double b, double z) {
-  return "(" + std::to_string(a) + " " + std::to_string(b) + (D == 3 ? " " + std::to_string(z) : "") + ")";
-}
 
 // The layer 20 d0 long (and 6 d0 deep across in 3D, periodic there too), H = 10 d0 deep,
 // moving at kSpeed along x over a floor of three layers; no viscosity, no shifting, a

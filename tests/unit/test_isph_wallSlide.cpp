@@ -22,14 +22,10 @@
 #include "isph/Simulation.hpp"
 
 using namespace shizuku;
+using test::vec;
 
 namespace {
 constexpr double kG = 9.81, kDt = 1e-3, kD0 = 0.02;
-
-template <int D>
-std::string vec(double a, double b, double z) {
-  return "(" + std::to_string(a) + " " + std::to_string(b) + (D == 3 ? " " + std::to_string(z) : "") + ")";
-}
 
 // The case around `regions` (the body of particlesDict's regions dictionary) at spacing d0:
 // no viscosity, no shifting, gravity along -y, a direct pressure solve.

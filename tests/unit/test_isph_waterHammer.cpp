@@ -16,14 +16,10 @@
 #include <cmath>
 
 using namespace shizuku;
+using test::vec;
 
 namespace {
 constexpr double kL = 0.2, kU = 0.1, kC = 10, kRho = 1000;
-
-template <int D>
-std::string vec(double a, double b, double z) {
-  return "(" + std::to_string(a) + " " + std::to_string(b) + (D == 3 ? " " + std::to_string(z) : "") + ")";
-}
 
 // The slab [0, L] (6 d0 across, periodic there) moving at -U toward the wall at x = 0; no
 // gravity, no viscosity, no shifting, a direct pressure solve.
