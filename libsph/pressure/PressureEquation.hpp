@@ -42,7 +42,7 @@ class PressureEquation {
   }
   // source[i] = b_i for fluid rows (rho/dt <div u*>_i plus the effects' terms); diagonal: the
   // effects' k added to every fluid row's diagonal (-<lap p>_i + k p_i = -b_i; eq. 6c).
-  void assemble(const FlowState<D>& s, const std::vector<double>& source, double diagonal = 0);
+  void assemble(const FlowState<D>& s, const std::vector<double>& source, double diagonal);
   // Solves and writes particles.pressure (p = 0 where not an unknown). correction: the
   // matrix is the last solve's with a few wall rows changed (the solver reuses its state).
   LinearSolveResult solve(FlowState<D>& s, bool correction = false);
