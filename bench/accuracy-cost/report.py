@@ -34,12 +34,14 @@ VARIANT_TEXT = {
     "proposed+stab": "the paper's method plus the stabilized PPE source term",
     "compressible": "proposed with the compressibility term (soundSpeed ten times the largest flow speed, "
                     "eq. 6c); only on damBreakWallPressure",
+    "noTaylor": "proposed without the Taylor correction of the velocity after the shift "
+                "(taylorCorrection off; tutorials/damBreakWallPressure's choice)",
 }
 COLOURS = {"proposed": "tab:red", "corrected": "tab:orange", "standard": "tab:brown", "OPS": "tab:blue",
            "noShift": "tab:gray", "baseline": "tab:green", "proposed+stab": "tab:purple",
-           "compressible": "tab:pink"}
+           "compressible": "tab:pink", "noTaylor": "tab:olive"}
 MARKERS = {"proposed": "o", "corrected": "s", "standard": "D", "OPS": "^", "noShift": "v", "baseline": "P",
-           "proposed+stab": "X", "compressible": "*"}
+           "proposed+stab": "X", "compressible": "*", "noTaylor": "h"}
 CASE_TEXT = {
     "rotatingSquarePatch": ("rotating square patch (tests/cases/rotatingSquarePatch: L = 1 m, omega = 1 rad/s, "
                             "inviscid, no walls; omega t <= 1; dt = 0.16 d0 s, Courant number 0.1 at the corners)",
@@ -67,8 +69,8 @@ MEASURE_TEXT = {
                              "four heights S1, S2, S3, P1 against the mean of three converged runs of the same "
                              "equations at H/400 (the tutorial's data/README.md; the sensors read the fluid)",
     "centrePressure": "centre pressure: max |p(0,0) - p_c| / |p_c| over 0.016 <= t <= 0.05 s, "
-                      "p_c = -0.147342707 rho omega^2 (L - d0)^2 (p = 0 sits on the outer particle row, "
-                      "so the effective side is L - d0; tests/cases/README.md)",
+                      "p_c = -0.147342707 rho omega^2 L^2 (p = 0 is imposed at the patch's edge, d0/2 outside "
+                      "the outer particle row, eq. 6b, so the side is L)",
     "kineticEnergyDrift": "kinetic energy: max |E(t)/E(0) - 1| over omega t <= 1 (exactly conserved)",
     "angularMomentumDrift": "angular momentum: max |L(t)/L(0) - 1| over omega t <= 1 (exactly conserved)",
     "volumeDrift": "fluid volume (conservation's fluidVolume: interior particles m/<rho>, the others m/rho0; "
@@ -534,7 +536,8 @@ def write_doc(rows, stages, info):
         "`OPS` = the distribution term alone; `none` = no `shifting` entry. Stabilization `on` = "
         "`pressureStabilization { type densityInvariant; alpha 1e-3; }`. Every variant keeps the tutorials' "
         "cubic spline kernel (h = 1.2 d0), `ads { }` (ADS at 0.95 d0, the default since 2026-11-30) and `xsph { epsilon 0.5; }`, "
-        "and the case's `constant/` files; `compressible` adds `soundSpeed 48` (eq. 6c) to damBreakWallPressure's.")
+        "and the case's `constant/` files; `compressible` adds `soundSpeed 48` (eq. 6c) to damBreakWallPressure's; "
+        "shifting `proposedNoTaylor` is `proposed` with `taylorCorrection off;`.")
     add("")
     add("## Cases and error measures")
     add("")
