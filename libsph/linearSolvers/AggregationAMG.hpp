@@ -8,7 +8,8 @@
 //     neighbours, then leftovers join the aggregate of their largest-coupled
 //     neighbour); tentative prolongation P0 = aggregate indicator; smoothed
 //     P = (I - omega D^-1 A) P0, omega = 0.8, each row truncated to its entries of
-//     at least 0.2 of its largest and rescaled to its sum; restriction R = P^T; coarse
+//     at least 0.2 of its largest (and its own aggregate's, so that no aggregate loses
+//     its column) and rescaled to its sum; restriction R = P^T; coarse
 //     A_c = R A P; recursively until <= 400 unknowns, or until the aggregation
 //     stalls on a larger level (a flow broken into many small clusters: a dispersed
 //     splash); the coarsest level is solved by a sparse LU (KLU, KLUFactor.hpp: on the
@@ -41,6 +42,7 @@ class AggregationAMG final : public Preconditioner {
   explicit AggregationAMG(int reuse = 10) : reuse_(std::max(1, reuse)) {}
   std::string describe() const override;
   bool setup(const SparseMatrixR& A) override;
+  std::string setupFailure() const override { return failure_; }
   void apply(const double* r, double* z) const override;
   bool nextSetupRebuilds() const override { return stale_ || sinceSetup_ >= reuse_ || levels_.empty(); }
   void rebuildAtNextSetup() override { stale_ = true; }
@@ -82,6 +84,7 @@ class AggregationAMG final : public Preconditioner {
   int coarsestRows_ = 0;
   bool coarsestStalled_ = false;
   KLUFactor coarse_;  // the coarsest level's LU
+  std::string failure_;  // why the last setup failed
 };
 
 }  // namespace shizuku

@@ -54,7 +54,7 @@ class BiCGSTABSolver final : public LinearSolver {
   LinearSolveResult solve(const SparseMatrixR& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
     LinearSolveResult r;
     if (!pc_->setup(A)) {
-      r.message = "preconditioner setup failed (missing diagonal?)";
+      r.message = pc_->setupFailure();
     } else {
       int budget = set_.maxIterations;
       for (int attempt = 0; attempt < 3 && budget > 0; ++attempt) {

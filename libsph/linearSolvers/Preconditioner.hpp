@@ -28,6 +28,8 @@ class Preconditioner {
   virtual std::string describe() const = 0;
   // Build from A (compressed, row-major, sorted columns, diagonal present). false: failed.
   virtual bool setup(const SparseMatrixR& A) = 0;
+  // After a failed setup(): what failed, for the log.
+  virtual std::string setupFailure() const { return "preconditioner setup failed (a zero or non-finite diagonal)"; }
   // z = M^{-1} r over all rows (called from outside a parallel region; parallel inside).
   virtual void apply(const double* r, double* z) const = 0;
   // Preconditioners kept across steps (AMG) hold state built from an earlier step's

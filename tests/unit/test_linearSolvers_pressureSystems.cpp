@@ -8,6 +8,9 @@
 //    block diagonal along its row blocks;
 //  - direct solvers that keep the symbolic analysis give right answers for a
 //    matrix with the same pattern and new values, and then for a new pattern;
+//  - the AMG keeps every aggregate on its coarse level when rows cancel their own
+//    aggregate's prolongator entry (a truncation that dropped it left the coarsest
+//    level singular);
 //  - the factory rejects unknown names and settings.
 #define BOOST_TEST_MODULE linearSolvers_pressureSystems
 #include <boost/test/unit_test.hpp>
@@ -200,6 +203,41 @@ BOOST_AUTO_TEST_CASE(amg_solves_a_dispersed_system_with_a_sparse_coarsest_level)
   BOOST_TEST(amg2.levels() > 1);
   BOOST_TEST(!amg2.coarsestStalled());
   BOOST_TEST(amg2.coarsestRows() <= 400);
+}
+
+// Rows that are not M-matrix rows (a disordered SPH stencil gives some positive
+// off-diagonal entries) can make a row's own aggregate the smallest entry of its smoothed
+// prolongator row. Rows 0-2 below are the first aggregate: each cancels its own column to
+// 1 - 0.8 (1 + 0.249) = 0.0008, while row 0's weak coupling (0.02, below the strength
+// threshold) and rows 1 and 2's strong ones put 0.016-1.2 into the next aggregate. The
+// rest is a chain with +-1 and +-2 couplings that does not couple back to rows 0-2 (the
+// matrix is block upper triangular, both blocks nonsingular). A truncation that drops
+// entries below 0.2 of the row's largest, the own aggregate's too, empties the first
+// column of P; the coarse level (about 200 rows, the coarsest) then has a zero row and
+// column, its factorisation fails and so does the setup.
+BOOST_AUTO_TEST_CASE(amg_keeps_every_aggregate_when_rows_cancel_their_own) {
+  const int n = 800;
+  const SparseMatrixR A = matrixOfRows(n, [](int i, auto add) {
+    add(i, i < 3 ? 1.0 : 4.01);
+    if (i == 0) add(1, 0.1245), add(2, 0.1245), add(3, -0.02);
+    if (i == 1) add(0, 0.15), add(2, 0.099), add(3, -1.0);
+    if (i == 2) add(0, 0.15), add(1, 0.099), add(3, -1.0), add(4, -0.5);
+    if (i < 3) return;
+    for (int d : {-2, -1, 1, 2})
+      if (i + d >= 3 && i + d < n) add(i + d, std::abs(d) == 1 ? -1.2 : -0.8);
+  });
+  AggregationAMG amg;
+  BOOST_TEST(exactnessError(amg, A, 13) < 1.0);  // setup succeeds; one V-cycle is no exact solve
+  BOOST_TEST(amg.levels() == 2);
+  BOOST_TEST(amg.coarsestRows() <= 400);
+  const Eigen::VectorXd xe = exactX(A, 13), b = A * xe;
+  auto s = make("solver BiCGSTAB; preconditioner AMG; tolerance 1e-10;");
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(A.rows());
+  const LinearSolveResult r = s->solve(A, b, x);
+  BOOST_TEST_MESSAGE("BiCGSTAB + AMG: " << r.iterations << " iterations, " << r.message);
+  BOOST_TEST(r.ok);
+  BOOST_TEST(!r.usedFallback);
+  BOOST_TEST((x - xe).lpNorm<Eigen::Infinity>() < 1e-6);
 }
 
 // A PPE shaped like the solver's, in D = 2 or 3 dimensions: an n^D lattice (spacing 1)
