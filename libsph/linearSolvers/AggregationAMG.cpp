@@ -133,11 +133,12 @@ int aggregate(const SparseMatrixR& A, const std::vector<double>& d, std::vector<
 
 // Drops the entries of each row of P below kTruncation of the row's largest and
 // rescales the rest to the row's old sum. A row keeps the entry of its own aggregate
-// whatever its size: where the smoothing moved most of a row's weight to neighbouring
-// aggregates (rows with off-diagonal entries of both signs), dropping it
-// in every member row emptied that aggregate's column of P, and A_c = R A P had a zero
-// row and column (measured: the noShift dam break at H/60, the coarsest KLU failing in
-// 5 steps of 4176, each solved by the direct fallback).
+// whatever its size (unless it is exactly zero). In a coarse level's rows, whose
+// off-diagonal entries have both signs, the smoothing can move most of a row's weight to
+// neighbouring aggregates; dropping the own entry in every member row emptied that
+// aggregate's column of P, and A_c = R A P had a zero row and column (measured: the noShift
+// dam break at H/60, the coarsest KLU failing in 5 steps of 4176, each solved by the direct
+// fallback).
 void truncate(SparseMatrixR& P, const std::vector<int>& agg) {
   for (int i = 0; i < int(P.rows()); ++i) {
     double largest = 0, sum = 0, kept = 0;
@@ -193,6 +194,7 @@ double AggregationAMG::operatorComplexity() const {
 
 bool AggregationAMG::setup(const SparseMatrixR& A) {
   fine_ = &A;
+  failure_.clear();
   const int n = int(A.rows());
   if (correcting_ && !stale_ && n == n_ && !levels_.empty()) {
     // the hierarchy of this step's first solve serves its correction as it is

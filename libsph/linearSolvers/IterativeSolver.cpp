@@ -30,6 +30,7 @@ class EigenILUT final : public Preconditioner {
     ilut_.compute(A);
     return ilut_.info() == Eigen::Success;
   }
+  std::string setupFailure() const override { return "ILUT setup failed (Eigen IncompleteLUT)"; }
   void apply(const double* r, double* z) const override {
     Eigen::Map<const Eigen::VectorXd> rm(r, n_);
     Eigen::Map<Eigen::VectorXd> zm(z, n_);

@@ -29,7 +29,7 @@ class Preconditioner {
   // Build from A (compressed, row-major, sorted columns, diagonal present). false: failed.
   virtual bool setup(const SparseMatrixR& A) = 0;
   // After a failed setup(): what failed, for the log.
-  virtual std::string setupFailure() const { return "preconditioner setup failed (a zero or non-finite diagonal)"; }
+  virtual std::string setupFailure() const { return "preconditioner setup failed"; }
   // z = M^{-1} r over all rows (called from outside a parallel region; parallel inside).
   virtual void apply(const double* r, double* z) const = 0;
   // Preconditioners kept across steps (AMG) hold state built from an earlier step's
@@ -53,6 +53,7 @@ class DiagonalPreconditioner final : public Preconditioner {
  public:
   std::string describe() const override { return "diagonal"; }
   bool setup(const SparseMatrixR& A) override;
+  std::string setupFailure() const override { return "diagonal preconditioner: a zero or non-finite diagonal"; }
   void apply(const double* r, double* z) const override;
 
  private:
@@ -65,6 +66,7 @@ class BlockILU0 final : public Preconditioner {
   explicit BlockILU0(int blocks = 0) : requestedBlocks_(blocks) {}
   std::string describe() const override;
   bool setup(const SparseMatrixR& A) override;
+  std::string setupFailure() const override { return "ILU0 setup failed: a row without a diagonal entry"; }
   void apply(const double* r, double* z) const override;
   int blocks() const { return int(blockStart_.size()) - 1; }
   // Pivots that were zero or tiny and were replaced (last setup).

@@ -205,15 +205,14 @@ BOOST_AUTO_TEST_CASE(amg_solves_a_dispersed_system_with_a_sparse_coarsest_level)
   BOOST_TEST(amg2.coarsestRows() <= 400);
 }
 
-// Rows that are not M-matrix rows (a disordered SPH stencil gives some positive
-// off-diagonal entries) can make a row's own aggregate the smallest entry of its smoothed
-// prolongator row. Rows 0-2 below are the first aggregate: each cancels its own column to
+// Rows whose off-diagonal entries have both signs (a coarse level's Galerkin rows R A P)
+// can make a row's own aggregate the smallest entry of its smoothed prolongator row. Rows 0-2 below are the first aggregate: each cancels its own column to
 // 1 - 0.8 (1 + 0.249) = 0.0008, while row 0's weak coupling (0.02, below the strength
 // threshold) and rows 1 and 2's strong ones put 0.016-1.2 into the next aggregate. The
 // rest is a chain with +-1 and +-2 couplings that does not couple back to rows 0-2 (the
 // matrix is block upper triangular, both blocks nonsingular). A truncation that drops
 // entries below 0.2 of the row's largest, the own aggregate's too, empties the first
-// column of P; the coarse level (about 200 rows, the coarsest) then has a zero row and
+// column of P; the coarse level (161 rows, the coarsest) then has a zero row and
 // column, its factorisation fails and so does the setup.
 BOOST_AUTO_TEST_CASE(amg_keeps_every_aggregate_when_rows_cancel_their_own) {
   const int n = 800;
