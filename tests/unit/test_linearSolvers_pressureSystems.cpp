@@ -206,7 +206,8 @@ BOOST_AUTO_TEST_CASE(amg_solves_a_dispersed_system_with_a_sparse_coarsest_level)
 }
 
 // Rows whose off-diagonal entries have both signs (a coarse level's Galerkin rows R A P)
-// can make a row's own aggregate the smallest entry of its smoothed prolongator row. Rows 0-2 below are the first aggregate: each cancels its own column to
+// can make a row's own aggregate the smallest entry of its smoothed prolongator row.
+// Rows 0-2 below are the first aggregate: each cancels its own column to
 // 1 - 0.8 (1 + 0.249) = 0.0008, while row 0's weak coupling (0.02, below the strength
 // threshold) and rows 1 and 2's strong ones put 0.016-1.2 into the next aggregate. The
 // rest is a chain with +-1 and +-2 couplings that does not couple back to rows 0-2 (the
@@ -226,7 +227,7 @@ BOOST_AUTO_TEST_CASE(amg_keeps_every_aggregate_when_rows_cancel_their_own) {
       if (i + d >= 3 && i + d < n) add(i + d, std::abs(d) == 1 ? -1.2 : -0.8);
   });
   AggregationAMG amg;
-  BOOST_TEST(exactnessError(amg, A, 13) < 1.0);  // setup succeeds; one V-cycle is no exact solve
+  BOOST_REQUIRE(amg.setup(A));
   BOOST_TEST(amg.levels() == 2);
   BOOST_TEST(amg.coarsestRows() <= 400);
   const Eigen::VectorXd xe = exactX(A, 13), b = A * xe;
