@@ -1,13 +1,14 @@
 #!/usr/bin/python3
 """The measures of a far-wall pressure history that issue 18 compares with Buchner (2002).
 
-usage: wallPressureMeasures.py [CASE ...] [--label NAME ...] [--plot OUT.png] [--heights]
-                               [--plotHeights OUT.png] [--H 0.6]
+usage: wallPressureMeasures.py [CASE ...] [--sensor P1] [--label NAME ...] [--plot OUT.png]
+                               [--heights] [--plotHeights OUT.png] [--plotLiterature OUT.png] [--H 0.6]
        wallPressureMeasures.py --experiment CSV
+       wallPressureMeasures.py --literature
 
 Time is t* = t sqrt(g/H), pressure p* = p/(rho g H). For each case folder (default: this
-one) it reads postProcessing/P1/0/wallPressure.dat (raw column `p`, filtered column
-`p_lowPass` when present) and prints:
+one) it reads postProcessing/P1/0/wallPressure.dat (or another sensor's, --sensor NAME; raw
+column `p`, filtered column `p_lowPass` when present) and prints:
   crossing   first t* where the raw p* exceeds 0.3 (issue 18's measure: on a signal that
              rises slowly, as the converged model's does at P1, the first spike above 0.3)
   crossingMean  first t* where the centred moving average of the raw p* over 0.1 in t*
@@ -39,7 +40,13 @@ deviation from the mean of the three converged runs' plateaus. --plotHeights dra
 four sensors.
 The same measures on an experiment's digitised points (a few points per unit t*: the noise
 cannot be measured there and is printed as nan; peaks from the points themselves).
---plot draws each case's raw and filtered P1 over the two digitised experiments in data/
+--literature prints the same measures for the published runs that read P1 with the probe of
+Adami et al. (2012) and Marrone et al. (2011), 90 mm tall with its top at 160 mm (70-160 mm,
+centre 115 mm; the tutorial's `P1probe90mm`): Marrone et al.'s delta-SPH at H/40, H/80 and
+H/320 (digitised) and TrixiParticles.jl's WCSPH and EDAC at H/320 (sampled every 0.02 s,
+0.08 in t*); data/README.md.
+--plotLiterature draws each case's `P1probe90mm` over those runs and the experiment.
+--plot draws each case's raw and filtered sensor over the two digitised experiments in data/
 (rho = 1000, g = 9.81 unless --rho, --g). Needs Debian's python3 with numpy and matplotlib.
 """
 import argparse
@@ -269,7 +276,18 @@ def plot_heights(cases, labels, out, H, rho, g):
     print(f"{out}: four sensor heights of {len(cases)} run(s) against the converged runs and the experiments")
 
 
-def plot(cases, labels, out, H, rho, g):
+def _finish_history(fig, ax, out):
+    """Axes, legend and file of a p* history figure over t* = 2-7.5."""
+    ax.set_xlim(2, 7.5)
+    ax.set_ylim(-0.3, 1.6)
+    ax.set_xlabel("t sqrt(g/H)")
+    ax.set_ylabel("p / (rho g H)")
+    ax.legend(fontsize=7, loc="upper left")
+    os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
+    fig.savefig(out, dpi=120, bbox_inches="tight")
+
+
+def plot(cases, labels, out, H, rho, g, sensor="P1"):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -278,17 +296,50 @@ def plot(cases, labels, out, H, rho, g):
         d = np.loadtxt(os.path.join(HERE, "data", name), delimiter=",", skiprows=1)
         ax.plot(d[:, 0], d[:, 1], style, ms=3, mfc="none", label="Buchner (2002) P1, " + name.split("_")[1][:-4])
     for case, label in zip(cases, labels):
-        t, p, pf = read_run(os.path.join(case, "postProcessing", "P1", "0", "wallPressure.dat"), H, rho, g)
+        t, p, pf = read_run(os.path.join(case, "postProcessing", sensor, "0", "wallPressure.dat"), H, rho, g)
         line, = ax.plot(t, p, lw=0.4, alpha=0.5)
         ax.plot(t, pf, lw=1.2, color=line.get_color(), label=label + " (100 Hz low-pass; thin: raw)")
-    ax.set_xlim(2, 7.5)
-    ax.set_ylim(-0.3, 1.6)
-    ax.set_xlabel("t sqrt(g/H)")
-    ax.set_ylabel("p / (rho g H)")
-    ax.legend(fontsize=7, loc="upper left")
-    os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
-    fig.savefig(out, dpi=120, bbox_inches="tight")
-    print(f"{out}: P1 of {len(cases)} run(s) over the experiment")
+    _finish_history(fig, ax, out)
+    print(f"{out}: {sensor} of {len(cases)} run(s) over the experiment")
+
+
+def plot_literature(cases, labels, out, H, rho, g):
+    """Each case's 90 mm probe (`P1probe90mm`, 100 Hz low-pass) over the published runs read the same way and
+    the experiment's P1."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(8, 4))
+    d = np.loadtxt(os.path.join(HERE, "data", "buchnerP1_trixiparticles.csv"), delimiter=",", skiprows=1)
+    ax.plot(d[:, 0], d[:, 1], "ko", ms=3, mfc="none", label="Buchner (2002) P1 (centre 160 mm)")
+    for label, t, p in literature_probe_references():
+        if "H/320" in label:
+            ax.plot(t, p, "--", lw=1.0, label=label + ", 90 mm probe")
+    for case, label in zip(cases, labels):
+        t, p, pf = read_run(os.path.join(case, "postProcessing", "P1probe90mm", "0", "wallPressure.dat"), H, rho, g)
+        ax.plot(t, pf, lw=1.2, label=label + ", 90 mm probe (100 Hz low-pass)")
+    _finish_history(fig, ax, out)
+    print(f"{out}: the 90 mm probe of {len(cases)} run(s) over the published runs and the experiment")
+
+
+def literature_probe_references():
+    """(label, t*, p*) of the published runs read with the 90 mm probe (data/README.md). The digitised
+    curves are resampled every 0.005 in t*, so that time means are not weighted by where the digitiser
+    clicked."""
+    d = np.loadtxt(os.path.join(HERE, "data", "marrone2011_P1_deltaSPH.csv"), delimiter=",", skiprows=1)
+    t = np.arange(d[0, 0], d[-1, 0], 0.005)
+    out = [("Marrone 2011 delta-SPH " + name, t, np.interp(t, d[:, 0], d[:, col]))
+           for name, col in (("H/40", 2), ("H/80", 4), ("H/320", 3))]
+    d = np.loadtxt(os.path.join(HERE, "data", "trixiparticles_probe90mm_H320_P1.csv"), delimiter=",", skiprows=1)
+    out += [("TrixiParticles WCSPH H/320", d[:, 0], d[:, 1]), ("TrixiParticles EDAC H/320", d[:, 0], d[:, 2])]
+    return out
+
+
+def literature_probe_converged():
+    """(mean, spread) of the plateau means of the three published runs at H/320 read with the 90 mm
+    probe (Marrone et al.'s delta-SPH, TrixiParticles' WCSPH and EDAC; spread: largest minus smallest)."""
+    v = [measures(t, p, p, noise=False)["plateau"] for label, t, p in literature_probe_references() if "H/320" in label]
+    return float(np.mean(v)), float(max(v) - min(v))
 
 
 def main():
@@ -297,6 +348,9 @@ def main():
     ap.add_argument("--label", nargs="*")
     ap.add_argument("--plot")
     ap.add_argument("--experiment")
+    ap.add_argument("--sensor", default="P1")
+    ap.add_argument("--literature", action="store_true")
+    ap.add_argument("--plotLiterature")
     ap.add_argument("--heights", action="store_true")
     ap.add_argument("--plotHeights")
     ap.add_argument("--H", type=float, default=0.6)
@@ -307,8 +361,10 @@ def main():
         d = np.loadtxt(a.experiment, delimiter=",", skiprows=1)
         d = d[np.argsort(d[:, 0], kind="stable")]
         rows = [("experiment", measures(d[:, 0], d[:, 1], d[:, 1], noise=False))]
+    elif a.literature:
+        rows = [(label, measures(t, p, p, noise=False)) for label, t, p in literature_probe_references()]
     else:
-        rows = [(c, dict(measures(*read_run(os.path.join(c, "postProcessing", "P1", "0", "wallPressure.dat"),
+        rows = [(c, dict(measures(*read_run(os.path.join(c, "postProcessing", a.sensor, "0", "wallPressure.dat"),
                                             a.H, a.rho, a.g)),
                          interiorNoise=interior_noise(c, a.H, a.rho, a.g),
                          balance=impulse_balance(c, a.H, a.g))) for c in a.cases]
@@ -320,8 +376,10 @@ def main():
         print_heights(a.cases, labels, a.H, a.rho, a.g)
     if a.plotHeights:
         plot_heights(a.cases, labels, a.plotHeights, a.H, a.rho, a.g)
+    if a.plotLiterature:
+        plot_literature(a.cases, labels, a.plotLiterature, a.H, a.rho, a.g)
     if a.plot:
-        plot(a.cases, a.label or a.cases, a.plot, a.H, a.rho, a.g)
+        plot(a.cases, a.label or a.cases, a.plot, a.H, a.rho, a.g, a.sensor)
     return 0
 
 
