@@ -87,7 +87,7 @@ bounds are printed for it too, and asserted is:
   - its plateau within 10 % (H/30) or 7 % (--full) of the mean of the three published runs at
     H/320 read the same way (Marrone's delta-SPH 0.550, TrixiParticles' WCSPH 0.586 and EDAC
     0.587; mean 0.574, spread 0.038). Measured 2026-12-07 on 2 threads: H/30 0.557 (-3.0 %),
-    H/60 0.569 (-0.9 %; 0.569 on 1 thread), H/120 0.582 (+1.3 %). The surface condition on the
+    H/60 0.569 (-1.0 %; 0.569 on 1 thread), H/120 0.582 (+1.3 %). The surface condition on the
     particles planted back (`pressureCondition particles`) gives 0.509 (-11.4 %) at H/30 and
     fails.
 """
