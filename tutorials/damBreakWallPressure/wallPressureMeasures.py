@@ -303,9 +303,9 @@ def plot(cases, labels, out, H, rho, g, sensor="P1"):
     print(f"{out}: {sensor} of {len(cases)} run(s) over the experiment")
 
 
-def plot_literature(cases, labels, out, H, rho, g):
-    """Each case's 90 mm probe (`P1probe90mm`, 100 Hz low-pass) over the published runs read the same way and
-    the experiment's P1."""
+def plot_literature(cases, labels, out, H, rho, g, sensor="P1probe90mm"):
+    """Each case's 90 mm probe (`P1probe90mm` unless --sensor names another, 100 Hz low-pass) over the
+    published runs read the same way and the experiment's P1; cases without that sensor are left out."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -316,7 +316,10 @@ def plot_literature(cases, labels, out, H, rho, g):
         if "H/320" in label:
             ax.plot(t, p, "--", lw=1.0, label=label + ", 90 mm probe")
     for case, label in zip(cases, labels):
-        t, p, pf = read_run(os.path.join(case, "postProcessing", "P1probe90mm", "0", "wallPressure.dat"), H, rho, g)
+        path = os.path.join(case, "postProcessing", sensor, "0", "wallPressure.dat")
+        if not os.path.exists(path):
+            continue
+        t, p, pf = read_run(path, H, rho, g)
         ax.plot(t, pf, lw=1.2, label=label + ", 90 mm probe (100 Hz low-pass)")
     _finish_history(fig, ax, out)
     print(f"{out}: the 90 mm probe of {len(cases)} run(s) over the published runs and the experiment")
@@ -336,9 +339,9 @@ def literature_probe_references():
 
 
 def literature_probe_converged():
-    """(mean, spread) of the plateau means of the three published runs at H/320 read with the 90 mm
+    """(mean, spread) of the plateau time means of the three published runs at H/320 read with the 90 mm
     probe (Marrone et al.'s delta-SPH, TrixiParticles' WCSPH and EDAC; spread: largest minus smallest)."""
-    v = [measures(t, p, p, noise=False)["plateau"] for label, t, p in literature_probe_references() if "H/320" in label]
+    v = [window_means(t, p)[-1] for label, t, p in literature_probe_references() if "H/320" in label]
     return float(np.mean(v)), float(max(v) - min(v))
 
 
@@ -377,7 +380,8 @@ def main():
     if a.plotHeights:
         plot_heights(a.cases, labels, a.plotHeights, a.H, a.rho, a.g)
     if a.plotLiterature:
-        plot_literature(a.cases, labels, a.plotLiterature, a.H, a.rho, a.g)
+        plot_literature(a.cases if not a.literature else [], labels, a.plotLiterature, a.H, a.rho, a.g,
+                        a.sensor if a.sensor != "P1" else "P1probe90mm")
     if a.plot:
         plot(a.cases, a.label or a.cases, a.plot, a.H, a.rho, a.g, a.sensor)
     return 0
