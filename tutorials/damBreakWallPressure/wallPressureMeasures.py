@@ -315,14 +315,15 @@ def plot_literature(cases, labels, out, H, rho, g, sensor="P1probe90mm"):
     for label, t, p in literature_probe_references():
         if "H/320" in label:
             ax.plot(t, p, "--", lw=1.0, label=label + ", 90 mm probe")
+    drawn = 0
     for case, label in zip(cases, labels):
         path = os.path.join(case, "postProcessing", sensor, "0", "wallPressure.dat")
-        if not os.path.exists(path):
-            continue
-        t, p, pf = read_run(path, H, rho, g)
-        ax.plot(t, pf, lw=1.2, label=label + ", 90 mm probe (100 Hz low-pass)")
+        if os.path.exists(path):
+            t, p, pf = read_run(path, H, rho, g)
+            ax.plot(t, pf, lw=1.2, label=label + ", 90 mm probe (100 Hz low-pass)")
+            drawn += 1
     _finish_history(fig, ax, out)
-    print(f"{out}: the 90 mm probe of {len(cases)} run(s) over the published runs and the experiment")
+    print(f"{out}: {sensor} of {drawn} run(s) over the published runs and the experiment")
 
 
 def literature_probe_references():
@@ -351,7 +352,7 @@ def main():
     ap.add_argument("--label", nargs="*")
     ap.add_argument("--plot")
     ap.add_argument("--experiment")
-    ap.add_argument("--sensor", default="P1")
+    ap.add_argument("--sensor")
     ap.add_argument("--literature", action="store_true")
     ap.add_argument("--plotLiterature")
     ap.add_argument("--heights", action="store_true")
@@ -367,7 +368,7 @@ def main():
     elif a.literature:
         rows = [(label, measures(t, p, p, noise=False)) for label, t, p in literature_probe_references()]
     else:
-        rows = [(c, dict(measures(*read_run(os.path.join(c, "postProcessing", a.sensor, "0", "wallPressure.dat"),
+        rows = [(c, dict(measures(*read_run(os.path.join(c, "postProcessing", a.sensor or "P1", "0", "wallPressure.dat"),
                                             a.H, a.rho, a.g)),
                          interiorNoise=interior_noise(c, a.H, a.rho, a.g),
                          balance=impulse_balance(c, a.H, a.g))) for c in a.cases]
@@ -380,10 +381,9 @@ def main():
     if a.plotHeights:
         plot_heights(a.cases, labels, a.plotHeights, a.H, a.rho, a.g)
     if a.plotLiterature:
-        plot_literature(a.cases if not a.literature else [], labels, a.plotLiterature, a.H, a.rho, a.g,
-                        a.sensor if a.sensor != "P1" else "P1probe90mm")
+        plot_literature(a.cases, labels, a.plotLiterature, a.H, a.rho, a.g, a.sensor or "P1probe90mm")
     if a.plot:
-        plot(a.cases, a.label or a.cases, a.plot, a.H, a.rho, a.g, a.sensor)
+        plot(a.cases, a.label or a.cases, a.plot, a.H, a.rho, a.g, a.sensor or "P1")
     return 0
 
 
